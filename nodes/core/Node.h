@@ -1,0 +1,46 @@
+#pragma once
+// Base of the scene graph (OSG style). Nodes are shared through std::shared_ptr: one ownership rule.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace aokit {
+
+class NodeVisitor;
+
+// Traversal masks, as osgShadow's CastsShadow/ReceivesShadow masks.
+enum NodeMask : std::uint32_t {
+  kCastsAO = 1u << 0,     // occludes others (enters voxelizers, fields, the reference)
+  kReceivesAO = 1u << 1,  // is shaded with AO
+  kVisible = 1u << 2,     // drawn at all
+  kDefaultMask = kCastsAO | kReceivesAO | kVisible,
+};
+
+class Node {
+ public:
+  virtual ~Node() = default;
+  virtual void accept(NodeVisitor& visitor);
+
+  const std::string& name() const { return name_; }
+  void setName(std::string name) { name_ = std::move(name); }
+
+  std::uint32_t mask() const { return mask_; }
+  void setMask(std::uint32_t mask) { mask_ = mask; touch(); }
+  bool castsAO() const { return mask_ & kCastsAO; }
+  bool receivesAO() const { return mask_ & kReceivesAO; }
+
+  // Bumped on every change that a renderer must pick up; lets updates skip untouched nodes.
+  std::uint64_t revision() const { return revision_; }
+
+ protected:
+  void touch() { ++revision_; }
+
+ private:
+  std::string name_;
+  std::uint32_t mask_ = kDefaultMask;
+  std::uint64_t revision_ = 0;
+};
+
+using NodePtr = std::shared_ptr<Node>;
+
+}  // namespace aokit

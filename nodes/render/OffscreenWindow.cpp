@@ -1,0 +1,94 @@
+#include "render/OffscreenWindow.h"
+
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <vtkUnsignedCharArray.h>
+#include <vtk_glew.h>
+
+#include "render/OSMesaContext.h"
+
+namespace aokit {
+
+struct OffscreenWindow::Impl {
+  Impl(int w, int h) : context(w, h) {}
+  OSMesaContext context;
+  vtkNew<vtkGenericOpenGLRenderWindow> window;
+  vtkNew<vtkRenderer> renderer;
+};
+
+namespace {
+int checkedSide(int side, int width, int height) {
+  if (width < 1 || height < 1 || width > OffscreenWindow::kMaxSide || height > OffscreenWindow::kMaxSide)
+    throw std::runtime_error("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                             " is out of range (1.." + std::to_string(OffscreenWindow::kMaxSide) + " per side)");
+  return side;
+}
+}  // namespace
+
+OffscreenWindow::OffscreenWindow(int width, int height)
+    : width_(checkedSide(width, width, height)), height_(checkedSide(height, width, height)) {
+  impl_ = std::make_unique<Impl>(width, height);
+  makeCurrent();
+
+  auto* w = impl_->window.Get();
+  w->SetOwnContext(0);
+  w->SetReadyForRendering(true);
+  w->SetIsCurrent(true);
+  w->SetFrameBlitModeToNoBlit();
+  w->SetMultiSamples(0);
+  w->SetSize(width, height);
+  w->AddRenderer(impl_->renderer);
+  w->SetOffScreenRendering(1);
+}
+
+OffscreenWindow::~OffscreenWindow() {
+  makeCurrent();
+  impl_->window->Finalize();
+  impl_->renderer->SetPass(nullptr);
+}
+
+vtkRenderer* OffscreenWindow::renderer() const { return impl_->renderer; }
+vtkGenericOpenGLRenderWindow* OffscreenWindow::window() const { return impl_->window; }
+
+void OffscreenWindow::makeCurrent() {
+  impl_->context.makeCurrent();
+}
+
+void OffscreenWindow::render() {
+  makeCurrent();
+  impl_->window->Render();
+}
+
+void OffscreenWindow::finish() { glFinish(); }
+
+RGBAImage OffscreenWindow::readColor() {
+  makeCurrent();
+  RGBAImage img;
+  img.width = width_;
+  img.height = height_;
+  img.pixels.resize(static_cast<std::size_t>(width_) * height_ * 4);
+  // With NoBlit the finished frame stays in VTK's render framebuffer; VTK reads it from there.
+  vtkNew<vtkUnsignedCharArray> data;
+  impl_->window->GetRGBACharPixelData(0, 0, width_ - 1, height_ - 1, /*front=*/0, data);
+  std::copy(data->GetPointer(0), data->GetPointer(0) + img.pixels.size(), img.pixels.begin());
+  return img;
+}
+
+std::string OffscreenWindow::glRendererString() {
+  makeCurrent();
+  const auto* s = glGetString(GL_RENDERER);
+  return s ? reinterpret_cast<const char*>(s) : "";
+}
+
+std::string OffscreenWindow::glVersionString() {
+  makeCurrent();
+  const auto* s = glGetString(GL_VERSION);
+  return s ? reinterpret_cast<const char*>(s) : "";
+}
+
+}  // namespace aokit
