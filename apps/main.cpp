@@ -1,18 +1,30 @@
+// aokit: ambient occlusion for VTK pipelines, headless. One executable, one subcommand per job.
 #include <cstdio>
-#include <vtkActor.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkRenderer.h>
-#include <vtkSphereSource.h>
-#include <vtkNew.h>
-#include "render/OffscreenWindow.h"
-int main() {
-  aokit::OffscreenWindow w(320, 240);
-  vtkNew<vtkSphereSource> s;
-  vtkNew<vtkPolyDataMapper> m; m->SetInputConnection(s->GetOutputPort());
-  vtkNew<vtkActor> a; a->SetMapper(m);
-  w.renderer()->AddActor(a);
-  w.render();
-  auto img = w.readColor();
-  long sum = 0; for (auto p : img.pixels) sum += p;
-  std::printf("%s | %s | sum %ld\n", w.glRendererString().c_str(), w.glVersionString().c_str(), sum);
+#include <exception>
+
+#include "Commands.h"
+#include "core/Progress.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"aokit: ambient occlusion nodes for VTK, rendered headless through OSMesa"};
+  app.require_subcommand(1);
+  aokit::cli::addRenderCommand(app);
+  aokit::cli::addReferenceCommand(app);
+  aokit::cli::addBenchCommand(app);
+  aokit::cli::addDemoCommand(app);
+  aokit::installInterruptHandler();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "aokit: error: %s (see aokit --help)\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "aokit: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
 }

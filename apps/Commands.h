@@ -1,0 +1,13 @@
+#pragma once
+// Each subcommand registers itself on the CLI11 app; the handlers throw std::exception with a
+// one-line message on bad input, which main() prints and turns into exit code 1.
+#include <CLI/CLI.hpp>
+
+namespace aokit::cli {
+
+void addRenderCommand(CLI::App& app);
+void addDemoCommand(CLI::App& app);
+void addReferenceCommand(CLI::App& app);
+void addBenchCommand(CLI::App& app);
+
+}  // namespace aokit::cli

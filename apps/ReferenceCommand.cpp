@@ -1,0 +1,75 @@
+// aokit reference: Embree ground truth for the pixels of one frame -> AO PNG + raw floats.
+#include <cstdio>
+
+#include "Commands.h"
+#include "Options.h"
+#include "core/Progress.h"
+#include "output/ImageFiles.h"
+#include "reference/AOReference.h"
+#include "reference/EmbreeScene.h"
+#include "reference/Falloff.h"
+#include "reference/Metrics.h"
+#include "render/FrameCapture.h"
+#include "render/OffscreenWindow.h"
+#include "render/SceneRenderer.h"
+
+namespace aokit::cli {
+
+namespace {
+struct ReferenceArgs {
+  SceneOptions scene;
+  int samples = 256;
+  std::string falloff;
+  std::uint64_t seed = 1;
+  std::string output = "reference";
+};
+
+void runReference(const ReferenceArgs& a) {
+  int w, h;
+  a.scene.imageSize(w, h);
+  Scene scene = a.scene.load();
+  if (!a.falloff.empty()) scene.root->setFalloff(parseFalloff(a.falloff));
+  OffscreenWindow window(w, h);
+  SceneRenderer renderer(window.renderer());
+  renderer.setScene(scene.root);
+  renderer.sync();
+  renderer.applyCamera(scene.camera);
+  const SurfaceSamples surfaces = captureSurfaces(window, renderer);
+  EmbreeScene embree(*scene.root);
+  ReferenceOptions opt;
+  opt.samples = a.samples;
+  opt.radius = scene.root->aoRadius();
+  opt.falloff = scene.root->falloff();
+  opt.seed = a.seed;
+  Progress progress("reference " + scene.name);
+  opt.progress = [&](double f) {
+    throwIfInterrupted();
+    progress.update(f);
+  };
+  ReferenceStats stats;
+  const AOBuffer ref = computeReferenceAO(embree, surfaces, opt, &stats);
+  progress.done();
+  writeAOPNG(a.output + ".png", w, h, ref.ao, ref.covered);
+  std::vector<float> raw(ref.ao);
+  for (std::size_t i = 0; i < raw.size(); ++i)
+    if (!ref.covered[i]) raw[i] = -1.0f;  // uncovered pixels are marked -1 in the raw file
+  writeFloatImage(a.output + ".f32", w, h, raw);
+  writeFloatImage(a.output + "-stderr.f32", w, h, ref.standardError);
+  std::printf("%s.png, %s.f32: %s %dx%d, %d rays/pixel, %.3g rays/s, standard error RMS %.4f\n", a.output.c_str(),
+              a.output.c_str(), scene.name.c_str(), w, h, a.samples, stats.raysPerSecond, meanStandardError(ref));
+}
+}  // namespace
+
+void addReferenceCommand(CLI::App& app) {
+  auto args = std::make_shared<ReferenceArgs>();
+  CLI::App* cmd = app.add_subcommand("reference", "Embree ground-truth AO of a frame's pixels");
+  args->scene.add(*cmd);
+  cmd->add_option("--samples", args->samples, "rays per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 16));
+  cmd->add_option("--falloff", args->falloff, "binary, wendland, sqrt, exponential (default: the scene's)");
+  cmd->add_option("--seed", args->seed, "sampling seed")->capture_default_str();
+  cmd->add_option("--output,-o", args->output, "output prefix: PREFIX.png, PREFIX.f32, PREFIX-stderr.f32")
+      ->capture_default_str();
+  cmd->callback([args] { runReference(*args); });
+}
+
+}  // namespace aokit::cli

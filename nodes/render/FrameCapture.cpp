@@ -1,0 +1,102 @@
+#include "render/FrameCapture.h"
+
+#include <stdexcept>
+
+#include <vtkCamera.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkMatrix4x4.h>
+#include <vtkRenderer.h>
+
+#include "core/AOScene.h"
+#include "render/GBufferPass.h"
+#include "render/OffscreenWindow.h"
+#include "render/SceneRenderer.h"
+
+namespace aokit {
+
+namespace {
+
+// Runs f with the scene's technique taken off and the renderer's pass replaced by `pass`.
+template <class F>
+void withPass(SceneRenderer& scene, vtkRenderer* renderer, vtkRenderPass* pass, F&& f) {
+  auto technique = scene.scene()->technique();
+  scene.scene()->setTechnique(nullptr);
+  scene.sync();
+  vtkRenderPass* previous = renderer->GetPass();
+  if (previous) previous->Register(nullptr);
+  renderer->SetPass(pass);
+  try {
+    f();
+  } catch (...) {
+    renderer->SetPass(previous);
+    if (previous) previous->UnRegister(nullptr);
+    scene.scene()->setTechnique(technique);
+    throw;
+  }
+  renderer->SetPass(previous);
+  if (previous) previous->UnRegister(nullptr);
+  scene.scene()->setTechnique(technique);
+  scene.sync();
+}
+
+}  // namespace
+
+SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene) {
+  if (!scene.scene()) throw std::logic_error("captureSurfaces: no scene");
+  vtkNew<GBufferPass> gbuffer;
+  std::vector<float> posVC, nrmVC;
+  vtkRenderer* renderer = window.renderer();
+  const ShadingMode mode = scene.shadingMode();
+  scene.setShadingMode(ShadingMode::Lit);  // lighting on: VTK then provides vertexVC and normals
+  withPass(scene, renderer, gbuffer, [&] {
+    window.render();
+    window.makeCurrent();
+    if (!gbuffer->ReadBack(posVC, nrmVC)) throw std::runtime_error("G-buffer read-back failed");
+  });
+  scene.setShadingMode(mode);
+  gbuffer->ReleaseGraphicsResources(window.window());
+
+  // VTK's model-view matrix maps world to view coordinates (row-major, column vectors).
+  vtkMatrix4x4* viewM = renderer->GetActiveCamera()->GetModelViewTransformMatrix();
+  glm::dmat4 view;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) view[c][r] = viewM->GetElement(r, c);
+  const glm::dmat4 toWorld = glm::inverse(view);
+  const glm::dmat3 rotToWorld(toWorld);  // the view transform is rigid: normals rotate like points
+
+  SurfaceSamples s;
+  s.resize(window.width(), window.height());
+  for (std::size_t i = 0; i < s.pixelCount(); ++i) {
+    const float* p = &posVC[i * 4];
+    const float* n = &nrmVC[i * 4];
+    if (p[3] <= 0.5f) continue;
+    s.covered[i] = 1;
+    s.position[i] = glm::vec3(toWorld * glm::dvec4(p[0], p[1], p[2], 1.0));
+    s.normal[i] = glm::vec3(glm::normalize(rotToWorld * glm::dvec3(n[0], n[1], n[2])));
+  }
+  return s;
+}
+
+AOBuffer captureAO(OffscreenWindow& window, SceneRenderer& scene, const std::vector<std::uint8_t>& coverage) {
+  const std::size_t n = static_cast<std::size_t>(window.width()) * window.height();
+  if (coverage.size() != n) throw std::invalid_argument("captureAO: coverage does not match the window size");
+  const ShadingMode mode = scene.shadingMode();
+  scene.setShadingMode(ShadingMode::AOOnly);
+  scene.sync();
+  window.render();
+  AOBuffer out;
+  out.resize(window.width(), window.height());
+  out.covered = coverage;
+  const auto& technique = scene.scene()->technique();
+  if (!(technique && technique->readAO(window.renderer(), out.ao))) {
+    const RGBAImage img = window.readColor();
+    for (std::size_t i = 0; i < n; ++i) out.ao[i] = 1.0f - img.pixels[i * 4] / 255.0f;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (!out.covered[i]) out.ao[i] = 0.0f;
+  scene.setShadingMode(mode);
+  scene.sync();
+  return out;
+}
+
+}  // namespace aokit

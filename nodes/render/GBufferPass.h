@@ -1,0 +1,75 @@
+#pragma once
+// GBufferPass renders its delegate (by default vtkRenderStepsPass) into an FBO with four targets:
+//   colour   RGBA8     the lit frame,
+//   position RGBA32F   view-space position, w = 1 where a surface was drawn (0 = background),
+//   normal   RGBA32F   view-space unit shading normal, facing the viewer,
+//   depth    32F       window depth.
+// Then it copies colour and depth to the framebuffer it was called with, so it can stand alone
+// in a pipeline. AO passes read its textures; the reference reads them back to the CPU.
+// Positions are 32-bit floats (vtkSSAOPass uses 16-bit): the reference needs them exact.
+#include <vector>
+
+#include <vtkOpenGLRenderPass.h>
+#include <vtkSmartPointer.h>
+
+#include <vtkOpenGLFramebufferObject.h>  // held by vtkSmartPointer
+#include <vtkTextureObject.h>
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+
+namespace aokit {
+
+class GBufferPass : public vtkOpenGLRenderPass {
+ public:
+  static GBufferPass* New();
+  vtkTypeMacro(GBufferPass, vtkOpenGLRenderPass);
+
+  void SetDelegatePass(vtkRenderPass* delegate);
+  vtkRenderPass* GetDelegatePass() const { return Delegate; }
+  // Copy colour and depth into the outer framebuffer after rendering (default on).
+  void SetCopyToOutput(bool on) { CopyToOutput = on; }
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  bool PreReplaceShaderValues(std::string& vs, std::string& gs, std::string& fs, vtkAbstractMapper* mapper,
+                              vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vs, std::string& gs, std::string& fs, vtkAbstractMapper* mapper,
+                               vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+                           vtkOpenGLVertexArrayObject* vao) override;
+
+  vtkTextureObject* GetColorTexture() const { return ColorTexture; }
+  vtkTextureObject* GetPositionTexture() const { return PositionTexture; }
+  vtkTextureObject* GetNormalTexture() const { return NormalTexture; }
+  vtkTextureObject* GetDepthTexture() const { return DepthTexture; }
+  vtkOpenGLFramebufferObject* GetFramebuffer() const { return Framebuffer; }
+  int GetWidth() const { return Width; }
+  int GetHeight() const { return Height; }
+
+  // Reads attachment 1 (positions) and 2 (normals) of the last frame: 4 floats a pixel, bottom
+  // row first. The context must be current. Returns false before the first Render.
+  bool ReadBack(std::vector<float>& positionsVC, std::vector<float>& normalsVC);
+  // GPU bytes held by the targets.
+  std::size_t MemoryBytes() const;
+
+ protected:
+  GBufferPass();
+  ~GBufferPass() override;
+
+ private:
+  void Allocate(vtkOpenGLRenderWindow* renWin, int w, int h);
+  void CopyToFramebuffer(vtkOpenGLRenderWindow* renWin);
+
+  vtkSmartPointer<vtkRenderPass> Delegate;
+  vtkSmartPointer<vtkTextureObject> ColorTexture, PositionTexture, NormalTexture, DepthTexture;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkOpenGLQuadHelper* CopyQuad = nullptr;
+  bool CopyToOutput = true;
+  int Width = 0, Height = 0;
+
+  GBufferPass(const GBufferPass&) = delete;
+  void operator=(const GBufferPass&) = delete;
+};
+
+}  // namespace aokit
