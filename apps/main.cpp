@@ -1,6 +1,7 @@
 // aokit: ambient occlusion for VTK pipelines, headless. One executable, one subcommand per job.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "Commands.h"
 #include "core/Progress.h"
@@ -13,6 +14,18 @@ int main(int argc, char** argv) {
   aokit::cli::addBenchCommand(app);
   aokit::cli::addDemoCommand(app);
   aokit::installInterruptHandler();
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string known;
+    bool found = false;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+      found = found || sub->get_name() == argv[1];
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!found) {
+      std::fprintf(stderr, "aokit: error: unknown command '%s' (known: %s)\n", argv[1], known.c_str());
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -19,12 +19,22 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
+#include "methods/MethodRegistry.h"
 #include "output/ImageFiles.h"
 #include "render/OffscreenWindow.h"
 
 namespace aokit {
 
 namespace {
+// A curve is a method at fixed switches, swept over its sample count: "vtkssao" over kernel sizes,
+// "vtkssao blur=1" as a second curve. Sample-count keys are the swept ones.
+std::string curveName(const BenchRow& r) {
+  std::string name = r.method;
+  for (const auto& kv : parseSettings(r.setting))
+    if (kv.first != "kernel" && kv.first != "samples") name += " " + kv.first + "=" + kv.second;
+  return name;
+}
+
 const unsigned char kColors[][3] = {{0, 0, 0},     {214, 39, 40}, {31, 119, 180}, {44, 160, 44},
                                     {255, 127, 14}, {148, 103, 189}, {140, 86, 75}, {227, 119, 194}};
 }
@@ -33,7 +43,8 @@ void writeErrorTimeChart(const std::string& path, const std::vector<BenchRow>& r
   std::vector<std::string> scenes, methodOrder;
   for (const auto& r : rows) {
     if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
-    if (std::find(methodOrder.begin(), methodOrder.end(), r.method) == methodOrder.end()) methodOrder.push_back(r.method);
+    if (std::find(methodOrder.begin(), methodOrder.end(), curveName(r)) == methodOrder.end())
+      methodOrder.push_back(curveName(r));
   }
   if (scenes.empty()) return;
   const int cols = std::min<int>(3, static_cast<int>(scenes.size()));
@@ -55,10 +66,17 @@ void writeErrorTimeChart(const std::string& path, const std::vector<BenchRow>& r
     chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE vs reference");
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("AO time (ms)");
     chart->SetShowLegend(true);
+    // Error axis from 0, so the gap between curves reads as a ratio.
+    double maxErr = 0;
+    for (const auto& r : rows)
+      if (r.scene == scenes[si]) maxErr = std::max(maxErr, r.rmse);
+    vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
+    left->SetBehavior(vtkAxis::FIXED);
+    left->SetRange(0.0, maxErr > 0 ? 1.1 * maxErr : 1.0);
     for (std::size_t mi = 0; mi < methodOrder.size(); ++mi) {
       std::vector<const BenchRow*> pts;
       for (const auto& r : rows)
-        if (r.scene == scenes[si] && r.method == methodOrder[mi]) pts.push_back(&r);
+        if (r.scene == scenes[si] && curveName(r) == methodOrder[mi]) pts.push_back(&r);
       if (pts.empty()) continue;
       std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->aoMs < b->aoMs; });
       vtkNew<vtkTable> table;

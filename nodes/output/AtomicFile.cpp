@@ -9,6 +9,9 @@
 namespace aokit {
 
 void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty() && !std::filesystem::is_directory(parent))
+    throw std::runtime_error(path + ": folder " + parent.string() + " does not exist");
   const std::string tmp = path + ".tmp-" + std::to_string(getpid());
   try {
     write(tmp);

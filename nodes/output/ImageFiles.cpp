@@ -21,7 +21,9 @@ void writePNG(const std::string& path, int width, int height, const std::vector<
   vtkNew<vtkImageData> image;
   image->SetDimensions(width, height, 1);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
-  std::memcpy(image->GetScalarPointer(), rgba.data(), rgba.size());  // VTK images are bottom-up too
+  auto* dst = static_cast<std::uint8_t*>(image->GetScalarPointer());  // VTK images are bottom-up too
+  std::memcpy(dst, rgba.data(), rgba.size());
+  for (std::size_t i = 3; i < rgba.size(); i += 4) dst[i] = 255;  // frames leave alpha 0 on the background
   writeAtomically(path, [&](const std::string& tmp) {
     vtkNew<vtkPNGWriter> writer;
     writer->SetFileName(tmp.c_str());

@@ -43,6 +43,7 @@ OffscreenWindow::OffscreenWindow(int width, int height)
   w->SetMultiSamples(0);
   w->SetSize(width, height);
   w->AddRenderer(impl_->renderer);
+  impl_->renderer->SetBackground(0.32, 0.34, 0.43);
   w->SetOffScreenRendering(1);
 }
 
