@@ -5,6 +5,7 @@
 #include "Options.h"
 #include "bench/Bench.h"
 #include "bench/ErrorTimeChart.h"
+#include "bench/SequenceBench.h"
 #include "methods/MethodRegistry.h"
 #include "output/AtomicFile.h"
 
@@ -19,6 +20,7 @@ struct BenchArgs {
   int samples = 256;
   int frames = 7;
   std::uint64_t seed = 1;
+  bool temporal = true;
 };
 
 const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes", "tank",
@@ -53,9 +55,18 @@ void runBenchCommand(const BenchArgs& a) {
   const BenchOutput out = runBench(cfg);
   writeBenchCsv(a.outDir + "/results.csv", out.rows);
   writeErrorTimeChart(a.outDir + "/chart.png", out.rows);
-  writeBenchReport(a.outDir + "/report.md", out.rows, out.references, "chart.png");
-  std::printf("%s/results.csv, %s/chart.png, %s/report.md (%zu rows)\n", a.outDir.c_str(), a.outDir.c_str(),
-              a.outDir.c_str(), out.rows.size());
+  std::vector<SequenceRow> sequence;
+  if (a.temporal) {
+    SequenceConfig seq;
+    seq.runs = cfg.runs;
+    seq.seed = cfg.seed;
+    seq.loadScene = resolveScene;
+    sequence = runSequenceBench(seq);
+    writeSequenceCsv(a.outDir + "/temporal.csv", sequence);
+  }
+  writeBenchReport(a.outDir + "/report.md", out.rows, out.references, "chart.png", sequence);
+  std::printf("%s/results.csv, %s/chart.png, %s/report.md%s (%zu rows)\n", a.outDir.c_str(), a.outDir.c_str(),
+              a.outDir.c_str(), a.temporal ? ", temporal.csv" : "", out.rows.size());
 }
 }  // namespace
 
@@ -71,6 +82,7 @@ void addBenchCommand(CLI::App& app) {
       CLI::Range(1, 1000));
   cmd->add_option("--seed", args->seed, "reference seed")->capture_default_str();
   cmd->add_option("--output,-o", args->outDir, "output folder")->capture_default_str();
+  cmd->add_flag("!--no-temporal", args->temporal, "skip the temporal-stability run on the animated scene");
   cmd->callback([args] { runBenchCommand(*args); });
 }
 

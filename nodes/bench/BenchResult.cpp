@@ -48,7 +48,8 @@ void writeBenchCsv(const std::string& path, const std::vector<BenchRow>& rows) {
 }
 
 void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows,
-                      const std::vector<ReferenceSummary>& refs, const std::string& chartFile) {
+                      const std::vector<ReferenceSummary>& refs, const std::string& chartFile,
+                      const std::vector<SequenceRow>& sequence) {
   writeAtomically(path, [&](const std::string& tmp) {
     std::ofstream out(tmp);
     out << "# aokit bench\n\n"
@@ -82,6 +83,17 @@ void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows
             << fmt("%.1f", r->frameMs) << " | " << fmt("%.1f", r->aoMs) << " | " << fmt("%.4f", r->rmse) << " | "
             << fmt("%.4f", r->mae) << " | " << fmt("%.3f", r->p99) << " | " << fmt("%.3f", r->ssim) << " | "
             << fmt("%.2f", r->memoryBytes / 1048576.0) << " |\n";
+    }
+    if (!sequence.empty()) {
+      out << "\n## Temporal stability (" << sequence.front().scene << ", " << sequence.front().frames
+          << " frames, camera held, " << sequence.front().staticPixels << " static pixels)\n\n"
+          << "Mean frame-to-frame change of AO on surfaces that do not move; the reference's own change (true "
+             "change plus its noise) beside it.\n\n| method | setting | change | reference change | mean RMSE |\n"
+             "|---|---|---|---|---|\n";
+      for (const auto& r : sequence)
+        out << "| " << r.method << " | " << (r.setting.empty() ? "-" : r.setting) << " | "
+            << fmt("%.4f", r.temporalChange) << " | " << fmt("%.4f", r.refTemporalChange) << " | "
+            << fmt("%.4f", r.meanRmse) << " |\n";
     }
     if (!out) throw std::runtime_error(path + ": cannot write");
   });

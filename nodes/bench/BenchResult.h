@@ -28,8 +28,20 @@ struct ReferenceSummary {
 const std::vector<std::string>& benchCsvColumns();
 // Writes rows atomically.
 void writeBenchCsv(const std::string& path, const std::vector<BenchRow>& rows);
-// Markdown: the rows as tables per scene, the reference summaries, and how to read them.
+// One method over an animated sequence (see SequenceBench.h).
+struct SequenceRow {
+  std::string scene, method, setting;
+  int frames = 0;
+  double temporalChange = 0;     // mean |AO_t - AO_t-1| on static surfaces
+  double refTemporalChange = 0;  // the reference's, same pixels
+  double meanRmse = 0;           // RMSE against the reference, averaged over frames
+  std::size_t staticPixels = 0;
+};
+
+// Markdown: the rows as tables per scene, the reference summaries, the temporal rows (optional),
+// and how to read them.
 void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows,
-                      const std::vector<ReferenceSummary>& refs, const std::string& chartFile);
+                      const std::vector<ReferenceSummary>& refs, const std::string& chartFile,
+                      const std::vector<SequenceRow>& sequence = {});
 
 }  // namespace aokit

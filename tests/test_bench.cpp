@@ -1,0 +1,113 @@
+// The bench: CSV schema, rows that agree with the metrics computed by hand, and bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "bench/Bench.h"
+#include "bench/BenchResult.h"
+#include "core/Geometry.h"
+#include "methods/MethodRegistry.h"
+#include "scenes/BuiltinScenes.h"
+
+using namespace aokit;
+
+namespace {
+BenchConfig tinyConfig() {
+  BenchConfig cfg;
+  cfg.width = 96;
+  cfg.height = 72;
+  cfg.refSamples = 16;
+  cfg.warmup = 0;
+  cfg.frames = 1;
+  cfg.progress = false;
+  cfg.measureRawThroughput = false;
+  cfg.scenes = {"sphere-plane"};
+  cfg.runs = {{"none", ""}, {"vtkssao", "kernel=16"}};
+  cfg.loadScene = [](const std::string& n) { return makeBuiltinScene(n); };
+  return cfg;
+}
+}  // namespace
+
+TEST(Bench, CsvHasTheRequiredColumnsInOrder) {
+  const std::vector<std::string> required = {"scene", "method", "setting", "width", "height", "base_ms", "frame_ms",
+                                             "ao_ms", "rmse", "mae", "p99", "ssim", "memory_bytes"};
+  const auto& cols = benchCsvColumns();
+  ASSERT_GE(cols.size(), required.size());
+  for (std::size_t i = 0; i < required.size(); ++i) EXPECT_EQ(cols[i], required[i]);
+
+  BenchRow row;
+  row.scene = "s";
+  row.method = "vtkssao";
+  row.setting = "kernel=32,blur=1";  // has a comma: must be quoted
+  row.rmse = 0.125;
+  const auto path = (std::filesystem::temp_directory_path() / "aokit-bench-schema.csv").string();
+  writeBenchCsv(path, {row});
+  std::ifstream in(path);
+  std::string header, line;
+  std::getline(in, header);
+  std::getline(in, line);
+  std::filesystem::remove(path);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), static_cast<long>(cols.size() - 1));
+  EXPECT_NE(line.find("\"kernel=32,blur=1\""), std::string::npos) << line;
+  EXPECT_NE(line.find("0.12500"), std::string::npos) << line;
+}
+
+TEST(Bench, NoAORowEqualsTheReferenceMeasuredAgainstZero) {
+  BenchConfig cfg = tinyConfig();
+  AOBuffer ref;
+  cfg.onReference = [&](const Scene&, const SurfaceSamples&, const AOBuffer& r) { ref = r; };
+  const BenchOutput out = runBench(cfg);
+  ASSERT_EQ(out.rows.size(), 2u);
+  // "none" predicts zero occlusion everywhere, so its RMSE is the RMS of the reference itself.
+  double sum = 0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < ref.pixelCount(); ++i)
+    if (ref.covered[i]) sum += double(ref.ao[i]) * ref.ao[i], ++n;
+  ASSERT_GT(n, 0u);
+  EXPECT_NEAR(out.rows[0].rmse, std::sqrt(sum / n), 1e-6);
+  EXPECT_EQ(out.rows[0].pixels, n);
+  EXPECT_EQ(out.rows[0].memoryBytes, 0u);
+  EXPECT_GT(out.rows[1].memoryBytes, 0u);
+  EXPECT_GT(out.rows[1].frameMs, 0.0);
+  EXPECT_DOUBLE_EQ(out.rows[1].aoMs, out.rows[1].frameMs - out.rows[1].baseMs);
+  ASSERT_EQ(out.references.size(), 1u);
+  EXPECT_GT(out.references[0].stdErr, 0.0);
+}
+
+TEST(Bench, UnknownMethodOrSettingFailsBeforeRendering) {
+  BenchConfig cfg = tinyConfig();
+  bool loaded = false;
+  cfg.loadScene = [&](const std::string& n) {
+    loaded = true;
+    return makeBuiltinScene(n);
+  };
+  cfg.runs = {{"no-such", ""}};
+  EXPECT_THROW(runBench(cfg), std::invalid_argument);
+  cfg.runs = {{"vtkssao", "kernel=abc"}};
+  EXPECT_THROW(runBench(cfg), std::invalid_argument);
+  EXPECT_FALSE(loaded);
+}
+
+TEST(Bench, ASceneWithNoCoveredPixelsIsAnError) {
+  BenchConfig cfg = tinyConfig();
+  cfg.loadScene = [](const std::string& n) {
+    Scene s = makeBuiltinScene(n);
+    s.camera.focalPoint = s.camera.position + (s.camera.position - s.camera.focalPoint);  // look away
+    return s;
+  };
+  try {
+    runBench(cfg);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no covered pixels"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Bench, ZeroReferenceSamplesIsAnError) {
+  BenchConfig cfg = tinyConfig();
+  cfg.refSamples = 0;
+  EXPECT_THROW(runBench(cfg), std::invalid_argument);
+}
