@@ -1,0 +1,50 @@
+#pragma once
+// Ground-truth ambient occlusion by Embree ray casting from the rasterizer's own surface points.
+//
+// For each covered pixel with point x and normal n it estimates
+//     A(x, n) = 1/pi * integral over the hemisphere of V(x, w) k(d(x, w)) cos(theta) dw
+// where d is the distance to the first occluder along w and k the falloff (falloffWeight), 0 beyond
+// the radius R. Directions are cosine-distributed, so the estimate is the mean of k(d) over the
+// rays. Binary falloff needs only occlusion rays (rtcOccluded1, tfar = R); the others need the hit
+// distance (rtcIntersect1). Samples are stratified (HemisphereSampler) and decorrelated per pixel,
+// and rays start from robust origins (SurfaceRay). Results depend on (samples, seed) only, never
+// on the thread count.
+#include <cstdint>
+#include <functional>
+
+#include "core/AOScene.h"
+#include "reference/EmbreeScene.h"
+#include "reference/SurfaceSamples.h"
+
+namespace aokit {
+
+struct ReferenceOptions {
+  int samples = 256;                  //!< rays per pixel, >= 1
+  double radius = 1.0;                //!< AO radius R in world units, > 0 (usually AOScene::aoRadius())
+  Falloff falloff = Falloff::Binary;  //!< weight of an occluder at distance d (usually AOScene::falloff())
+  std::uint64_t seed = 1;             //!< same seed, same samples -> bit-identical output
+  int threads = 0;                    //!< worker threads; 0 = hardware concurrency
+  float rayOffset = 0.0f;             //!< origin offset in world units; 0 = defaultRayOffset()
+  std::function<void(double)> progress;  //!< fraction done, on the calling thread; throw to cancel
+};
+
+struct ReferenceStats {
+  double raysPerSecond = 0.0;  // AO rays / seconds
+  double seconds = 0.0;        // wall time of the ray-casting phase (probes and sampling included)
+  std::uint64_t rays = 0;      // AO rays cast (samples per valid covered pixel; probe rays not counted)
+};
+
+// AO, coverage and standard error for every pixel of `samples`. A covered pixel with a zero or
+// non-finite normal or position comes back uncovered. Throws std::invalid_argument on bad
+// options or buffer sizes, std::runtime_error on an Embree error.
+AOBuffer computeReferenceAO(const EmbreeScene& scene, const SurfaceSamples& samples, const ReferenceOptions& options,
+                            ReferenceStats* stats = nullptr);
+
+// Rays per second of plain rtcOccluded1 on the same occlusion rays (same origins, directions,
+// tfar = R) from the same number of threads, with the rays generated beforehand and not timed:
+// the ceiling computeReferenceAO is compared against. Uses every k-th row (all rays of its covered
+// pixels), k chosen so that about maxRays rays are held in memory (48 bytes each).
+double measureRawOccludedThroughput(const EmbreeScene& scene, const SurfaceSamples& samples,
+                                    const ReferenceOptions& options, std::uint64_t maxRays = 1u << 21);
+
+}  // namespace aokit

@@ -1,0 +1,67 @@
+#include "reference/PrimarySamples.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace aokit {
+
+SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera, int width, int height) {
+  if (width <= 0 || height <= 0) throw std::invalid_argument("castPrimarySamples: image size must be positive");
+  const glm::dvec3 forward = glm::normalize(camera.focalPoint - camera.position);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.viewUp));
+  const glm::dvec3 up = glm::cross(right, forward);
+  const double tanHalf = std::tan(glm::radians(camera.viewAngleDeg) * 0.5);
+  const double aspect = static_cast<double>(width) / height;
+
+  SurfaceSamples s;
+  s.resize(width, height);
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const double sx = (2.0 * (x + 0.5) / width - 1.0) * tanHalf * aspect;
+      const double sy = (2.0 * (y + 0.5) / height - 1.0) * tanHalf;
+      const glm::vec3 dir(glm::normalize(forward + sx * right + sy * up));
+      RTCRayHit rh;
+      rh.ray.org_x = static_cast<float>(camera.position.x);
+      rh.ray.org_y = static_cast<float>(camera.position.y);
+      rh.ray.org_z = static_cast<float>(camera.position.z);
+      rh.ray.dir_x = dir.x;
+      rh.ray.dir_y = dir.y;
+      rh.ray.dir_z = dir.z;
+      rh.ray.tnear = 0.0f;
+      rh.ray.tfar = std::numeric_limits<float>::infinity();
+      rh.ray.time = 0.0f;
+      rh.ray.mask = ~0u;
+      rh.ray.id = 0;
+      rh.ray.flags = 0;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(scene.scene(), &ctx, &rh);
+      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+
+      const auto& inst = scene.instances().at(rh.hit.geomID);
+      glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+      if (glm::dot(ng, dir) > 0.0f) ng = -ng;
+      glm::vec3 n = ng;
+      const TriangleMesh& mesh = *inst.mesh;
+      if (mesh.normals.size() == mesh.positions.size()) {
+        const glm::uvec3 t = mesh.triangles[rh.hit.primID];
+        const float u = rh.hit.u, v = rh.hit.v;
+        const glm::dvec3 local((1.0f - u - v) * mesh.normals[t.x] + u * mesh.normals[t.y] + v * mesh.normals[t.z]);
+        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(inst.world)));
+        const glm::vec3 world(normalMatrix * local);
+        if (glm::length(world) > 0.0f) n = glm::normalize(world);
+        if (glm::dot(n, ng) < 0.0f) n = -n;
+      }
+      const std::size_t i = s.index(x, y);
+      s.position[i] = glm::vec3(rh.ray.org_x, rh.ray.org_y, rh.ray.org_z) + rh.ray.tfar * dir;
+      s.normal[i] = n;
+      s.covered[i] = 1;
+    }
+  scene.throwIfError("primary rays");
+  return s;
+}
+
+}  // namespace aokit
