@@ -1,0 +1,117 @@
+#include "io/MeshIO.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "io/IsolatedRead.h"
+#include "io/MeshReaders.h"
+
+namespace aokit {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kExtensions[] = {".off", ".obj", ".ply", ".stl", ".vtp", ".vtu", ".vtk"};
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+// One line, whatever a library put in its message.
+std::string oneLine(std::string s) {
+  std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s.empty() ? std::string("unknown error") : s;
+}
+
+// Keeps file normals only when they are all usable, then makes them unit length.
+void finishNormals(TriangleMesh& m) {
+  bool usable = m.normals.size() == m.positions.size() && !m.normals.empty();
+  for (std::size_t i = 0; usable && i < m.normals.size(); ++i) {
+    const glm::vec3& n = m.normals[i];
+    const float len = glm::length(n);
+    usable = std::isfinite(len) && len > 1e-12f;
+  }
+  if (!usable) {
+    m.computeNormals();
+    return;
+  }
+  for (auto& n : m.normals) n = glm::normalize(n);
+}
+
+bool viaOpenMesh(const std::string& ext) { return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl"; }
+bool vtkFallback(const std::string& ext) { return ext == ".obj" || ext == ".stl"; }
+std::string readerNames(const std::string& ext) {
+  return !viaOpenMesh(ext) ? "VTK" : vtkFallback(ext) ? "OpenMesh or VTK" : "OpenMesh";
+}
+
+// The library readers: OpenMesh first where it applies, VTK for its own formats and as a second
+// opinion on OBJ and STL. Runs in the reader process (see IsolatedRead.h).
+ReadResult readWithLibraries(const std::string& path, const std::string& ext) {
+  ReadResult r;
+  if (viaOpenMesh(ext)) {
+    // OBJ and STL normals are per face corner; OpenMesh would collapse them onto shared vertices,
+    // so only formats with true per-vertex normals ask for them.
+    r.ok = readWithOpenMesh(path, ext == ".off" || ext == ".ply", r.mesh, r.why);
+  }
+  // VTK also gets a go when OpenMesh found no faces: its readers know other dialects. Not for OFF
+  // (VTK has no reader) nor PLY (vtkPLYReader double-frees on corrupt files that pass our checks).
+  if ((!r.ok || r.mesh.triangles.empty()) && (vtkFallback(ext) || !viaOpenMesh(ext))) {
+    const VtkFormat format = ext == ".vtp"   ? VtkFormat::XmlPolyData
+                             : ext == ".vtu" ? VtkFormat::XmlUnstructuredGrid
+                             : ext == ".vtk" ? VtkFormat::Legacy
+                             : ext == ".obj" ? VtkFormat::Obj
+                                             : VtkFormat::Stl;
+    TriangleMesh other;
+    std::string vtkWhy;
+    if (readWithVtk(path, format, other, vtkWhy) && (!r.ok || !other.triangles.empty())) {
+      r.mesh = std::move(other);
+      r.ok = true;
+    }
+    if (!vtkWhy.empty()) r.why = vtkWhy;
+  }
+  return r;
+}
+
+TriangleMesh read(const std::string& path, const std::string& ext) {
+  std::error_code ec;
+  const auto status = fs::status(path, ec);
+  if (!fs::exists(status)) throw std::runtime_error("no such file");
+  if (!fs::is_regular_file(status)) throw std::runtime_error("not a regular file");
+  const auto size = fs::file_size(path, ec);
+  if (ec || size == 0) throw std::runtime_error("file is empty");
+  precheckMeshFile(path, ext);
+
+  ReadResult r = readIsolated([&] { return readWithLibraries(path, ext); }, size);
+  if (!r.ok)
+    throw std::runtime_error("not a mesh " + readerNames(ext) + " can read" + (r.why.empty() ? "" : " (" + r.why + ")"));
+  r.mesh.validate();  // before the normals: computing them needs finite positions
+  finishNormals(r.mesh);
+  return std::move(r.mesh);
+}
+
+}  // namespace
+
+std::vector<std::string> meshExtensions() { return {std::begin(kExtensions), std::end(kExtensions)}; }
+
+TriangleMesh loadMesh(const std::string& path) {
+  const std::string ext = lower(fs::path(path).extension().string());
+  if (std::none_of(std::begin(kExtensions), std::end(kExtensions), [&](const char* e) { return ext == e; })) {
+    std::string known;
+    for (const char* e : kExtensions) known += (known.empty() ? "" : " ") + std::string(e);
+    throw std::runtime_error(path + ": unknown mesh extension '" + ext + "' (known: " + known + ")");
+  }
+  try {
+    return read(path, ext);
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error(path + ": out of memory while reading");
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": " + oneLine(e.what()));
+  }
+}
+
+}  // namespace aokit

@@ -1,0 +1,29 @@
+#pragma once
+// Loading triangle meshes from files: OFF, OBJ, PLY, STL through OpenMesh (VTK's readers as a
+// fallback for OBJ and STL; not for PLY, where vtkPLYReader crashes on corrupt files), VTP, VTU
+// and legacy VTK through VTK.
+#include <string>
+#include <vector>
+
+#include "core/TriangleMesh.h"
+
+namespace aokit {
+
+// Reads the mesh at `path`, chosen by extension (case-insensitive): .off .obj .ply .stl .vtp .vtu
+// .vtk. Polygons are fan-triangulated (exact for convex ones), non-manifold parts kept as they are
+// (a triangle soup, as renderers want it). File normals are kept only where the format stores
+// them per vertex (PLY, NOFF, VTK point normals) and every vertex has a usable one; otherwise
+// normals are computed. The result passes TriangleMesh::validate().
+//
+// Every failure throws std::runtime_error with one line "<path>: <problem>", e.g.
+// "x.off: face 3 refers to vertex 12, but the file has 8 vertices". Files are first checked here
+// (declared counts, list lengths, index ranges, number syntax), since the library readers trust
+// them; the readers then run in a child process (IsolatedRead.h) whose crashes, hangs and
+// runaway allocations on corrupt files become errors too. Nothing is printed.
+// Limits: OFF must be ASCII with each face on one line.
+TriangleMesh loadMesh(const std::string& path);
+
+// The extensions loadMesh accepts, with the dot, lower case.
+std::vector<std::string> meshExtensions();
+
+}  // namespace aokit

@@ -1,0 +1,175 @@
+// Reading through VTK: the XML and legacy dataset formats, and the fallback for OBJ and STL.
+// Any dataset is reduced to its outer surface (vtkGeometryFilter) and triangulated
+// (vtkTriangleFilter); points and lines are dropped.
+#include <mutex>
+#include <stdexcept>
+
+#include <vtkAlgorithm.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkGenericDataObjectReader.h>
+#include <vtkGeometryFilter.h>
+#include <vtkLogger.h>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkOutputWindow.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSTLReader.h>
+#include <vtkSmartPointer.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include "io/MeshReaders.h"
+
+namespace aokit {
+namespace {
+
+// Collects VTK's error and warning text instead of printing it. VTK routes every vtkErrorMacro
+// without an observer to the one global output window; XML readers report through internal parser
+// objects we cannot attach observers to, so swapping the window is the one place to catch it all.
+class CapturingOutputWindow : public vtkOutputWindow {
+ public:
+  static CapturingOutputWindow* New();
+  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
+
+  void DisplayText(const char*) override {}
+  void DisplayErrorText(const char* text) override { keep(text); }
+  void DisplayWarningText(const char*) override {}
+  void DisplayGenericWarningText(const char*) override {}
+  void DisplayDebugText(const char*) override {}
+  const std::string& firstError() const { return first_; }
+
+ private:
+  void keep(const char* text) {
+    if (first_.empty() && text) first_ = text;
+  }
+  std::string first_;
+};
+vtkStandardNewMacro(CapturingOutputWindow);
+
+// Installs a CapturingOutputWindow for one scope and mutes vtkLogger, which prints every error to
+// stderr before the output window sees it. vtkLogger has no getter for its stderr level; the
+// overall cutoff equals it unless log files or callbacks were added. Global state: callers hold
+// vtkReadMutex.
+class ScopedVtkCapture {
+ public:
+  ScopedVtkCapture() : previous_(vtkOutputWindow::GetInstance()), logLevel_(vtkLogger::GetCurrentVerbosityCutoff()) {
+    vtkOutputWindow::SetInstance(window_);
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  ~ScopedVtkCapture() {
+    vtkLogger::SetStderrVerbosity(logLevel_);
+    vtkOutputWindow::SetInstance(previous_);
+  }
+  ScopedVtkCapture(const ScopedVtkCapture&) = delete;
+  ScopedVtkCapture& operator=(const ScopedVtkCapture&) = delete;
+  const std::string& firstError() const { return window_->firstError(); }
+
+ private:
+  vtkSmartPointer<vtkOutputWindow> previous_;
+  vtkLogger::Verbosity logLevel_;
+  vtkNew<CapturingOutputWindow> window_;
+};
+
+std::mutex vtkReadMutex;
+
+// VTK messages read "ERROR: In <file>, line N\n<class> (0x...): <text>\n\n": keep <text>, at most
+// 200 bytes, printable ASCII only (readers quote the garbage they choked on).
+std::string vtkMessageText(std::string msg) {
+  if (const auto colon = msg.find("): "); colon != std::string::npos) msg = msg.substr(colon + 3);
+  while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
+  if (msg.size() > 200) msg = msg.substr(0, 200) + "...";
+  for (char& c : msg)
+    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+  return msg;
+}
+
+vtkSmartPointer<vtkAlgorithm> makeReader(VtkFormat format, const std::string& path) {
+  switch (format) {
+    case VtkFormat::XmlPolyData: {
+      auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+      r->SetFileName(path.c_str());
+      return r;
+    }
+    case VtkFormat::XmlUnstructuredGrid: {
+      auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+      r->SetFileName(path.c_str());
+      return r;
+    }
+    case VtkFormat::Legacy: {
+      auto r = vtkSmartPointer<vtkGenericDataObjectReader>::New();
+      r->SetFileName(path.c_str());
+      return r;
+    }
+    case VtkFormat::Obj: {
+      auto r = vtkSmartPointer<vtkOBJReader>::New();
+      r->SetFileName(path.c_str());
+      return r;
+    }
+    case VtkFormat::Stl: {
+      auto r = vtkSmartPointer<vtkSTLReader>::New();
+      r->SetFileName(path.c_str());
+      return r;
+    }
+  }
+  return nullptr;
+}
+
+void copySurface(vtkPolyData& pd, TriangleMesh& out) {
+  vtkPoints* points = pd.GetPoints();
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  out.positions.resize(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i) {
+    double p[3];
+    points->GetPoint(i, p);
+    out.positions[i] = glm::vec3(p[0], p[1], p[2]);
+  }
+  vtkCellArray* polys = pd.GetPolys();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+    if (count == 3) out.triangles.emplace_back(ids[0], ids[1], ids[2]);
+  vtkDataArray* normals = pd.GetPointData()->GetNormals();
+  if (normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == n) {
+    out.normals.resize(out.positions.size());
+    for (vtkIdType i = 0; i < n; ++i) {
+      double v[3];
+      normals->GetTuple(i, v);
+      out.normals[i] = glm::vec3(v[0], v[1], v[2]);
+    }
+  }
+}
+
+}  // namespace
+
+bool readWithVtk(const std::string& path, VtkFormat format, TriangleMesh& out, std::string& why) {
+  std::lock_guard<std::mutex> lock(vtkReadMutex);
+  ScopedVtkCapture capture;
+  auto reader = makeReader(format, path);
+  if (!reader) return false;
+  vtkNew<vtkGeometryFilter> surface;
+  surface->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(surface->GetOutputPort());
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  try {
+    triangles->Update();
+  } catch (const std::bad_alloc&) {
+    why = "out of memory while reading";
+    return false;
+  }
+  if (!capture.firstError().empty()) {
+    why = vtkMessageText(capture.firstError());
+    return false;
+  }
+  TriangleMesh mesh;
+  copySurface(*triangles->GetOutput(), mesh);
+  out = std::move(mesh);
+  return true;
+}
+
+}  // namespace aokit

@@ -1,0 +1,59 @@
+#include "scenes/BuiltinScenes.h"
+
+#include <cstdlib>
+#include <functional>
+#include <stdexcept>
+
+#include "scenes/SceneBuilders.h"
+
+namespace aokit {
+namespace {
+
+using Builder = std::function<Scene(const BuiltinOptions&)>;
+
+// Ordered as listed to users: canonical scenes first.
+const std::vector<std::pair<std::string, Builder>>& registry() {
+  static const std::vector<std::pair<std::string, Builder>> r = {
+      {"sphere-plane", [](const BuiltinOptions&) { return makeSpherePlaneScene(); }},
+      {"sphere-offscreen", [](const BuiltinOptions&) { return makeSphereOffscreenScene(); }},
+      {"cubes", [](const BuiltinOptions& o) { return makeCubesScene(o.cubeCount, o.seed); }},
+      {"tank", [](const BuiltinOptions&) { return makeTankScene(); }},
+      {"corridor", [](const BuiltinOptions&) { return makeCorridorScene(); }},
+      {"room", [](const BuiltinOptions&) { return makeRoomScene(0.85f); }},
+      {"room-dark", [](const BuiltinOptions&) { return makeRoomScene(0.15f); }},
+      {"animated", [](const BuiltinOptions&) { return makeAnimatedScene(); }},
+      {"bunny", [](const BuiltinOptions& o) { return makePackagedMeshScene("bunny", o.modelsDir); }},
+      {"fandisk", [](const BuiltinOptions& o) { return makePackagedMeshScene("fandisk", o.modelsDir); }},
+  };
+  return r;
+}
+
+}  // namespace
+
+std::vector<std::string> builtinSceneNames() {
+  std::vector<std::string> names;
+  for (const auto& entry : registry()) names.push_back(entry.first);
+  return names;
+}
+
+Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& opts) {
+  for (const auto& entry : registry()) {
+    if (entry.first != name) continue;
+    Scene scene = entry.second(opts);
+    scene.name = name;
+    return scene;
+  }
+  std::string known;
+  for (const auto& n : builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown scene '" + name + "' (known: " + known + ")");
+}
+
+std::string defaultModelsDir() {
+  if (const char* env = std::getenv("AOKIT_MODELS_DIR"); env && *env) return env;
+  // Compile-time fallback: this file sits at <source>/nodes/scenes/, the models at <source>/models.
+  std::string here = __FILE__;
+  const auto pos = here.rfind("nodes/scenes/");
+  return pos == std::string::npos ? std::string("models") : here.substr(0, pos) + "models";
+}
+
+}  // namespace aokit

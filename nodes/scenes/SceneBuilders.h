@@ -1,0 +1,21 @@
+#pragma once
+// Internal: one builder per built-in scene (each in its own .cpp); makeBuiltinScene dispatches.
+#include "core/Scene.h"
+#include "scenes/BuiltinScenes.h"
+
+namespace aokit {
+
+// Albedo of the neutral grey most scenes use.
+constexpr float kDefaultAlbedo = 0.8f;
+
+Scene makeSpherePlaneScene();
+Scene makeSphereOffscreenScene();
+Scene makeCubesScene(int count, std::uint32_t seed);
+Scene makeTankScene();
+Scene makeCorridorScene();
+Scene makeRoomScene(float albedo);
+Scene makeAnimatedScene();
+// "bunny" or "fandisk": a packaged mesh stood on a ground plane.
+Scene makePackagedMeshScene(const std::string& name, const std::string& modelsDir);
+
+}  // namespace aokit
