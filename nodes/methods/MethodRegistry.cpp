@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "baseline/VtkSSAOTechnique.h"
+#include "reference/Falloff.h"
+#include "screen/ObscuranceTechnique.h"
 
 namespace aokit {
 
@@ -29,6 +31,20 @@ const std::vector<MethodInfo>& methods() {
       {"vtkssao", "VTK's vtkSSAOPass, radius R, bias 0.01 R",
        {"kernel=16", "kernel=32", "kernel=64", "kernel=128", "kernel=32,blur=1"},
        {"kernel", "blur", "bias"}},
+      // Screen-space obscurances (seed 003). Keys: samples (rays per pixel, 1..64), m (points per ray,
+      // 1..4), scale (1 full or 0.5 half resolution), radius (world units, 0 = scene R), falloff
+      // (binary|wendland|sqrt|exponential, default the scene's), interleave (shifts|rotations|off),
+      // filter, silhouette, transfer (0|1), bias and thickness (silhouette-elimination window), both
+      // fractions of R, tolerance (filter depth tolerance, fraction of view depth), view
+      // (none|ao|normals|depth: debug views). Curve: the seed's criterion (thickness 1) with m = 2
+      // and 4, a thinner window, the defaults (samples=4: m 4, thickness 0.7, half resolution),
+      // and one full-resolution point.
+      {"obscurance", "screen-space obscurances (seed 003): Poisson-disc rays, 4x4 interleave, depth-aware filter",
+       {"samples=4,m=2,thickness=1", "samples=8,m=2,thickness=1", "samples=4,m=4,thickness=1",
+        "samples=8,m=4,thickness=1", "samples=4,m=4,thickness=0.5", "samples=4", "samples=6,m=3",
+        "samples=4,scale=1"},
+       {"samples", "m", "scale", "radius", "falloff", "interleave", "filter", "silhouette", "transfer", "bias",
+        "thickness", "tolerance", "view"}},
   };
   return all;
 }
@@ -109,6 +125,42 @@ std::shared_ptr<AOTechnique> makeTechnique(const std::string& method, const std:
     v.blur = settingBool(s, method, "blur", false);
     v.biasFraction = settingDouble(s, method, "bias", 0.01, 0.0, 1.0);
     return std::make_shared<VtkSSAOTechnique>(v);
+  }
+  if (method == "obscurance") {
+    ObscuranceSettings o;
+    o.samples = settingInt(s, method, "samples", o.samples, 1, 64);
+    o.pointsPerRay = settingInt(s, method, "m", o.pointsPerRay, 1, 4);
+    o.resolutionScale = settingDouble(s, method, "scale", o.resolutionScale, 0.5, 1.0);
+    o.radius = settingDouble(s, method, "radius", o.radius, 0.0, 1e30);
+    if (s.count("falloff")) {
+      try {
+        o.falloff = parseFalloff(s.at("falloff"));
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(method + ": " + e.what());
+      }
+    }
+    if (s.count("interleave")) {
+      const std::string& v = s.at("interleave");
+      if (v == "shifts" || v == "1") o.interleave = Interleave::Shifts;
+      else if (v == "rotations") o.interleave = Interleave::Rotations;
+      else if (v == "off" || v == "0") o.interleave = Interleave::Off;
+      else throw std::invalid_argument(method + ": interleave must be shifts, rotations or off, got '" + v + "'");
+    }
+    o.filter = settingBool(s, method, "filter", o.filter);
+    o.silhouetteElimination = settingBool(s, method, "silhouette", o.silhouetteElimination);
+    o.ambientTransfer = settingBool(s, method, "transfer", o.ambientTransfer);
+    o.bias = settingDouble(s, method, "bias", o.bias, 0.0, 0.5);
+    o.thickness = settingDouble(s, method, "thickness", o.thickness, 1e-6, 4.0);
+    o.filterTolerance = settingDouble(s, method, "tolerance", o.filterTolerance, 1e-6, 1.0);
+    if (s.count("view")) {
+      const std::string& v = s.at("view");
+      const char* names[] = {"none", "ao", "normals", "depth"};
+      int k = 0;
+      while (k < 4 && v != names[k]) ++k;
+      if (k == 4) throw std::invalid_argument(method + ": view must be none, ao, normals or depth, got '" + v + "'");
+      o.debugView = static_cast<ObscuranceDebugView>(k);
+    }
+    return std::make_shared<ObscuranceTechnique>(o);  // validate() rejects scales other than 1 and 0.5
   }
   throw std::logic_error("method '" + method + "' is listed but not constructible");
 }

@@ -1,0 +1,45 @@
+#pragma once
+// One full-screen fragment program of a post-process pass: an embedded .glsl source whose
+// "//AOKIT::Obscurance::Defines" line receives the shape-changing #defines. The program is
+// rebuilt only when those defines change; uniforms are set on it every frame.
+#include <string>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+
+namespace aokit {
+
+class ScreenQuadStage {
+ public:
+  ScreenQuadStage(std::string name, const char* fragmentSource);
+  ~ScreenQuadStage();
+  ScreenQuadStage(const ScreenQuadStage&) = delete;
+  ScreenQuadStage& operator=(const ScreenQuadStage&) = delete;
+
+  // Builds (when the defines changed) and binds the program. Returns nullptr when it does not
+  // compile or link; VTK's shader cache has then printed the log, and the caller reports the stage.
+  vtkShaderProgram* ready(vtkOpenGLRenderWindow* renWin, const std::string& defines);
+  // Draws the quad with the bound program (after ready()) into the current framebuffer.
+  void render();
+  // Draws it into `target` (and `second` as colour attachment 1) through `fbo`, at the target's
+  // size; the previous framebuffer bindings are restored.
+  void renderInto(vtkOpenGLFramebufferObject* fbo, vtkTextureObject* target, vtkTextureObject* second = nullptr);
+  // Drops the program and vertex arrays (the context is going away or changing).
+  void release();
+
+  const std::string& name() const { return name_; }
+  // The fragment source as compiled for `defines` (tests, debugging).
+  std::string fragmentSource(const std::string& defines) const;
+
+ private:
+  std::string name_;
+  const char* source_;
+  std::string defines_;
+  vtkOpenGLQuadHelper* quad_ = nullptr;
+  bool failed_ = false;
+};
+
+}  // namespace aokit

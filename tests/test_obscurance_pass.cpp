@@ -1,0 +1,257 @@
+// Obscurance node on llvmpipe against the Embree reference (small frames, 64 rays per pixel):
+// error bounds on sphere-plane and room beside vtkSSAOPass, the corridor's false silhouette shadow
+// with and without elimination, the ambient transfer W on a white and a dark room, and the pass in
+// a plain VTK pipeline.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
+#include <vtkCamera.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkNew.h>
+#include <vtkPlaneSource.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+
+#include "methods/MethodRegistry.h"
+#include "reference/AOReference.h"
+#include "reference/EmbreeScene.h"
+#include "reference/Metrics.h"
+#include "render/FrameCapture.h"
+#include "render/OffscreenWindow.h"
+#include "render/SceneRenderer.h"
+#include "scenes/BuiltinScenes.h"
+#include "screen/ObscurancePass.h"
+#include "screen/ObscuranceTechnique.h"
+
+using namespace aokit;
+
+namespace {
+
+constexpr int kW = 256, kH = 192;
+
+// One built-in scene in a small window, with its G-buffer samples and Embree reference.
+struct SceneRig {
+  Scene scene;
+  OffscreenWindow window{kW, kH};
+  SceneRenderer renderer{window.renderer()};
+  SurfaceSamples surfaces;
+  AOBuffer reference;
+
+  explicit SceneRig(const std::string& name) : scene(makeBuiltinScene(name)) {
+    renderer.setScene(scene.root);
+    renderer.sync();
+    renderer.applyCamera(scene.camera);
+    surfaces = captureSurfaces(window, renderer);
+    EmbreeScene embree(*scene.root);
+    ReferenceOptions opt;
+    opt.samples = 64;
+    opt.radius = scene.root->aoRadius();
+    opt.falloff = scene.root->falloff();
+    reference = computeReferenceAO(embree, surfaces, opt);
+  }
+
+  AOBuffer ao(std::shared_ptr<AOTechnique> technique) {
+    scene.root->setTechnique(std::move(technique));
+    renderer.sync();
+    AOBuffer out = captureAO(window, renderer, surfaces.covered);
+    scene.root->setTechnique(nullptr);
+    renderer.sync();
+    return out;
+  }
+  double rmse(std::shared_ptr<AOTechnique> technique) { return compareAO(ao(std::move(technique)), reference).rmse; }
+};
+
+std::shared_ptr<AOTechnique> obscurance(const std::string& setting = "") {
+  return makeTechnique("obscurance", setting);
+}
+
+double rmseOver(const AOBuffer& a, const std::vector<float>& b, const std::vector<std::uint8_t>& mask) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < mask.size(); ++i)
+    if (mask[i]) {
+      sum += (a.ao[i] - b[i]) * (a.ao[i] - b[i]);
+      ++n;
+    }
+  return n ? std::sqrt(sum / n) : NAN;
+}
+
+}  // namespace
+
+TEST(ObscurancePass, SpherePlaneFarBelowVtkSSAO) {
+  SceneRig rig("sphere-plane");
+  const double ssao = rig.rmse(makeTechnique("vtkssao", "kernel=32"));
+  const double half = rig.rmse(obscurance());
+  const double full = rig.rmse(obscurance("scale=1"));
+  // Measured 0.150 for vtkSSAOPass, 0.030 (half) / 0.029 (full resolution) here; 0.137 and 0.028 at
+  // 512 x 384.
+  EXPECT_LT(half, 0.05);
+  EXPECT_LT(full, 0.05);
+  EXPECT_LT(half, 0.35 * ssao);
+}
+
+TEST(ObscurancePass, RoomBelowVtkSSAO) {
+  // A closed room seen from inside: occluders off screen at every edge and thin table legs, the
+  // two known failure modes; still clearly better than vtkSSAOPass (measured 0.084 vs 0.119).
+  SceneRig rig("room");
+  const double ssao = rig.rmse(makeTechnique("vtkssao", "kernel=32"));
+  const double ours = rig.rmse(obscurance());
+  EXPECT_LT(ours, 0.1);
+  EXPECT_LT(ours, 0.8 * ssao);
+}
+
+TEST(ObscurancePass, SilhouetteEliminationRemovesTheDoorsFalseShadow) {
+  // The band: pixels of the back wall (y = 16) within 12 pixels of a pixel of the door (y = 12,
+  // 8 R in front of the wall), where screen-space AO sees a large depth step; wall pixels within R
+  // of the side walls or the floor are left out, so that the reference has no occlusion there.
+  SceneRig rig("corridor");
+  const SurfaceSamples& s = rig.surfaces;
+  const float R = static_cast<float>(rig.scene.root->aoRadius());
+  auto isDoor = [&](std::size_t i) { return s.covered[i] && std::abs(s.position[i].y - 12.0f) < 0.1f; };
+  auto isBackWall = [&](std::size_t i) {
+    const glm::vec3& p = s.position[i];
+    return s.covered[i] && std::abs(p.y - 16.0f) < 0.01f && std::abs(p.x) < 1.25f - R && p.z > R;
+  };
+  std::vector<std::uint8_t> band(s.pixelCount(), 0);
+  std::size_t bandPixels = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const std::size_t i = s.index(x, y);
+      if (!isBackWall(i) || !rig.reference.covered[i]) continue;
+      for (int dy = -12; dy <= 12 && !band[i]; ++dy)
+        for (int dx = -12; dx <= 12 && !band[i]; ++dx) {
+          const int xx = x + dx, yy = y + dy;
+          if (xx >= 0 && yy >= 0 && xx < kW && yy < kH && isDoor(s.index(xx, yy))) band[i] = 1;
+        }
+      bandPixels += band[i];
+    }
+  ASSERT_GT(bandPixels, 100u) << "the door's silhouette should border the back wall";
+
+  const double with = rmseOver(rig.ao(obscurance()), rig.reference.ao, band);
+  const double without = rmseOver(rig.ao(obscurance("silhouette=0")), rig.reference.ao, band);
+  RecordProperty("band_rmse_with_elimination", std::to_string(with));
+  RecordProperty("band_rmse_without_elimination", std::to_string(without));
+  std::printf("corridor door band (%zu px): RMSE %.4f with elimination, %.4f without\n", bandPixels, with, without);
+  EXPECT_LT(with, 0.5 * without);
+  EXPECT_LT(with, 0.05);
+}
+
+TEST(ObscurancePass, AmbientTransferLightensWhiteRoomsAndMatchesEquation6) {
+  // With ambient-only materials the colour buffer holds the albedo a, and the reference's W follows
+  // from its obscurance O = 1 - AO by eq. 6 for a uniform albedo: W = O / (1 - a (1 - O)).
+  for (const auto& [name, albedo] : {std::pair<std::string, float>{"room", 0.85f}, {"room-dark", 0.15f}}) {
+    SceneRig rig(name);
+    auto technique = obscurance("transfer=1");
+    rig.scene.root->setTechnique(technique);
+    rig.renderer.setShadingMode(ShadingMode::Lit);
+    rig.renderer.sync();
+    vtkActorCollection* actors = rig.window.renderer()->GetActors();
+    actors->InitTraversal();
+    while (vtkActor* a = actors->GetNextActor()) {
+      a->GetProperty()->SetAmbient(1.0);
+      a->GetProperty()->SetDiffuse(0.0);
+    }
+    rig.window.render();
+    AOBuffer transfer;
+    transfer.resize(kW, kH);
+    transfer.covered = rig.surfaces.covered;
+    ASSERT_TRUE(technique->readAO(rig.window.renderer(), transfer.ao));
+    rig.scene.root->setTechnique(nullptr);
+    rig.renderer.sync();
+
+    AOBuffer expected = rig.reference;
+    double meanTransfer = 0.0, meanAO = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < expected.ao.size(); ++i) {
+      if (!expected.covered[i]) continue;
+      const double O = 1.0 - rig.reference.ao[i];
+      expected.ao[i] = static_cast<float>(1.0 - O / (1.0 - albedo * (1.0 - O)));
+      if (transfer.covered[i]) {
+        meanTransfer += transfer.ao[i];
+        meanAO += rig.reference.ao[i];
+        ++n;
+      }
+    }
+    meanTransfer /= n;
+    meanAO /= n;
+    const double err = compareAO(transfer, expected).rmse;
+    std::printf("%s (a = %.2f): 1 - W RMSE %.4f against eq. 6; mean 1 - W %.3f, mean AO %.3f\n", name.c_str(), albedo,
+                err, meanTransfer, meanAO);
+    EXPECT_LT(err, 0.1) << name;
+    if (albedo > 0.5)
+      EXPECT_LT(meanTransfer, 0.5 * meanAO) << "a white room darkens far less than its obscurance";
+    else
+      EXPECT_GT(meanTransfer, 0.6 * meanAO) << "a dark room's W stays close to its obscurance";
+  }
+}
+
+TEST(ObscurancePass, WorksInAPlainVtkPipeline) {
+  OffscreenWindow window(kW, kH);
+  vtkRenderer* renderer = window.renderer();
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0, 0, 1.2);
+  sphere->SetRadius(1.0);
+  sphere->SetThetaResolution(64);
+  sphere->SetPhiResolution(32);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-4, -4, 0);
+  plane->SetPoint1(4, -4, 0);
+  plane->SetPoint2(-4, 4, 0);
+  for (vtkAlgorithm* src : {static_cast<vtkAlgorithm*>(sphere), static_cast<vtkAlgorithm*>(plane)}) {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(src->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetAmbient(1.0);
+    actor->GetProperty()->SetDiffuse(0.0);
+    renderer->AddActor(actor);
+  }
+  renderer->GetActiveCamera()->SetPosition(0, -6.5, 4.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0, 0, 0.7);
+  renderer->GetActiveCamera()->SetViewUp(0, 0, 1);
+  renderer->ResetCameraClippingRange();
+
+  vtkNew<ObscurancePass> pass;  // default delegate, radius from the visible bounds
+  renderer->SetPass(pass);
+  window.render();
+  EXPECT_NEAR(pass->GetConstants().radius, 0.1 * std::sqrt(8.0 * 8.0 + 8.0 * 8.0 + 2.2 * 2.2), 0.05);
+
+  std::vector<float> ao;
+  ASSERT_TRUE(pass->ReadAO(window.window(), ao));
+  ASSERT_EQ(ao.size(), static_cast<std::size_t>(kW) * kH);
+  for (float v : ao) ASSERT_TRUE(v >= 0.0f && v <= 1.0f);
+  const RGBAImage img = window.readColor();
+  // The floor just below the sphere's silhouette is darker than the floor near the frame's bottom.
+  auto red = [&](int x, int y) { return img.pixels[4 * (y * kW + x)]; };
+  int below = -1;
+  for (int y = kH / 2; y > 0 && below < 0; --y)
+    if (ao[y * kW + kW / 2] > 0.3f) below = y;
+  ASSERT_GT(below, 0) << "no occlusion found under the sphere";
+  EXPECT_LT(red(kW / 2, below), red(kW / 2, 2));
+  EXPECT_GT(pass->MemoryBytes(), 0u);
+  renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(window.window());
+}
+
+TEST(ObscurancePass, HalfResolutionHoldsLessMemory) {
+  SceneRig rig("sphere-plane");
+  auto half = obscurance("scale=0.5"), full = obscurance("scale=1");
+  rig.ao(half);
+  const std::size_t gbuffer = static_cast<std::size_t>(kW) * kH * 40;  // GBufferPass: 4 + 16 + 16 + 4 bytes
+  rig.scene.root->setTechnique(half);
+  rig.renderer.sync();
+  rig.window.render();
+  EXPECT_EQ(half->memoryBytes(), gbuffer + static_cast<std::size_t>(kW / 2) * (kH / 2) * 12);
+  rig.scene.root->setTechnique(full);
+  rig.renderer.sync();
+  rig.window.render();
+  EXPECT_EQ(full->memoryBytes(), gbuffer + static_cast<std::size_t>(kW) * kH * 12);
+  rig.scene.root->setTechnique(nullptr);
+  rig.renderer.sync();
+}
