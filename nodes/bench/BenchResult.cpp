@@ -87,8 +87,8 @@ void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows
     if (!sequence.empty()) {
       out << "\n## Temporal stability (" << sequence.front().scene << ", " << sequence.front().frames
           << " frames, camera held, " << sequence.front().staticPixels << " static pixels)\n\n"
-          << "Mean frame-to-frame change of AO on surfaces that do not move; the reference's own change (true "
-             "change plus its noise) beside it.\n\n| method | setting | change | reference change | mean RMSE |\n"
+          << "Mean frame-to-frame change of AO on surfaces that do not move; the reference's own change beside it (the "
+             "true change: it casts the same rays every frame, so its noise does not flicker).\n\n| method | setting | change | reference change | mean RMSE |\n"
              "|---|---|---|---|---|\n";
       for (const auto& r : sequence)
         out << "| " << r.method << " | " << (r.setting.empty() ? "-" : r.setting) << " | "
