@@ -18,6 +18,7 @@ struct RenderArgs {
   std::string setting;
   std::string output = "aokit.png";
   bool aoOnly = false;
+  std::string aoFloat;
   int frame = 0;
 };
 
@@ -38,6 +39,14 @@ void runRender(const RenderArgs& a) {
   renderer.applyCamera(scene.camera);
   window.render();
   const RGBAImage img = window.readColor();
+  AOBuffer ao;
+  if (!a.aoFloat.empty()) {
+    const SurfaceSamples surfaces = captureSurfaces(window, renderer);
+    ao = captureAO(window, renderer, surfaces.covered);
+    for (std::size_t i = 0; i < ao.ao.size(); ++i)
+      if (!ao.covered[i]) ao.ao[i] = -1.0f;  // as in `aokit reference`: -1 = no surface
+    writeFloatImage(a.aoFloat, w, h, ao.ao);
+  }
   writePNG(a.output, img.width, img.height, img.pixels);
   std::printf("%s: %s, method %s%s%s, %dx%d\n", a.output.c_str(), scene.name.c_str(), a.method.c_str(),
               a.setting.empty() ? "" : " ", a.setting.c_str(), w, h);
@@ -52,6 +61,8 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--setting", args->setting, "method settings, key=value[,key=value]");
   cmd->add_option("--output,-o", args->output, "PNG file to write")->capture_default_str();
   cmd->add_flag("--ao-only", args->aoOnly, "white, ambient-only material: the image shows 1 - AO");
+  cmd->add_option("--ao-float", args->aoFloat,
+                  "also write the method's AO as raw floats (occlusion in [0,1], -1 = no surface)");
   cmd->add_option("--frame", args->frame, "frame of an animated scene")->capture_default_str();
   cmd->callback([args] { runRender(*args); });
 }
