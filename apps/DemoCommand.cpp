@@ -68,7 +68,10 @@ void runDemo(const DemoArgs& a) {
   cfg.loadScene = [&](const std::string&) { return a.scene.load(); };
   cfg.onReference = [&](const Scene&, const SurfaceSamples&, const AOBuffer& ref) {
     writeAOPNG(dir + "reference-ao.png", w, h, ref.ao, ref.covered);
-    writeFloatImage(dir + "reference-ao.f32", w, h, ref.ao);
+    std::vector<float> raw(ref.ao);
+    for (std::size_t i = 0; i < raw.size(); ++i)
+      if (!ref.covered[i]) raw[i] = -1.0f;  // -1 = no surface, as everywhere
+    writeFloatImage(dir + "reference-ao.f32", w, h, raw);
   };
   const BenchOutput out = runBench(cfg);
   writeBenchCsv(dir + "results.csv", out.rows);
