@@ -10,8 +10,7 @@
 #include "output/AtomicFile.h"
 #include "output/ImageFiles.h"
 #include "render/FrameCapture.h"
-#include "render/OffscreenWindow.h"
-#include "render/SceneRenderer.h"
+#include "render/SceneView.h"
 
 namespace aokit::cli {
 
@@ -38,11 +37,9 @@ void runDemo(const DemoArgs& a) {
   // Every method's lit frame and AO-only frame.
   Scene scene = a.scene.load();
   {
-    OffscreenWindow window(w, h);
-    SceneRenderer renderer(window.renderer());
-    renderer.setScene(scene.root);
-    renderer.sync();
-    renderer.applyCamera(scene.camera);
+    SceneView view(scene, w, h);
+    OffscreenWindow& window = view.window;
+    SceneRenderer& renderer = view.renderer;
     const SurfaceSamples surfaces = captureSurfaces(window, renderer);
     for (const auto& [method, setting] : defaultBenchRuns()) {
       scene.root->setTechnique(makeTechnique(method, setting));

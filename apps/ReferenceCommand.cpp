@@ -10,8 +10,7 @@
 #include "reference/Falloff.h"
 #include "reference/Metrics.h"
 #include "render/FrameCapture.h"
-#include "render/OffscreenWindow.h"
-#include "render/SceneRenderer.h"
+#include "render/SceneView.h"
 
 namespace aokit::cli {
 
@@ -29,23 +28,12 @@ void runReference(const ReferenceArgs& a) {
   a.scene.imageSize(w, h);
   Scene scene = a.scene.load();
   if (!a.falloff.empty()) scene.root->setFalloff(parseFalloff(a.falloff));
-  OffscreenWindow window(w, h);
-  SceneRenderer renderer(window.renderer());
-  renderer.setScene(scene.root);
-  renderer.sync();
-  renderer.applyCamera(scene.camera);
-  const SurfaceSamples surfaces = captureSurfaces(window, renderer);
+  SceneView view(scene, w, h);
+  const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
   EmbreeScene embree(*scene.root);
-  ReferenceOptions opt;
-  opt.samples = a.samples;
-  opt.radius = scene.root->aoRadius();
-  opt.falloff = scene.root->falloff();
-  opt.seed = a.seed;
+  ReferenceOptions opt = sceneReferenceOptions(*scene.root, a.samples, a.seed);
   Progress progress("reference " + scene.name);
-  opt.progress = [&](double f) {
-    throwIfInterrupted();
-    progress.update(f);
-  };
+  opt.progress = progress.reporter();
   ReferenceStats stats;
   const AOBuffer ref = computeReferenceAO(embree, surfaces, opt, &stats);
   progress.done();

@@ -6,8 +6,7 @@
 #include "methods/MethodRegistry.h"
 #include "output/ImageFiles.h"
 #include "render/FrameCapture.h"
-#include "render/OffscreenWindow.h"
-#include "render/SceneRenderer.h"
+#include "render/SceneView.h"
 
 namespace aokit::cli {
 
@@ -31,12 +30,11 @@ void runRender(const RenderArgs& a) {
                                 std::to_string(scene.frameCount) + " frames)");
   if (scene.animate) scene.animate(scene, a.frame);
   scene.root->setTechnique(makeTechnique(a.method, a.setting));
-  OffscreenWindow window(w, h);
-  SceneRenderer renderer(window.renderer());
-  renderer.setScene(scene.root);
+  SceneView view(scene, w, h);
+  OffscreenWindow& window = view.window;
+  SceneRenderer& renderer = view.renderer;
   renderer.setShadingMode(a.aoOnly ? ShadingMode::AOOnly : ShadingMode::Lit);
   renderer.sync();
-  renderer.applyCamera(scene.camera);
   window.render();
   const RGBAImage img = window.readColor();
   AOBuffer ao;

@@ -10,8 +10,7 @@
 #include "reference/EmbreeScene.h"
 #include "reference/Metrics.h"
 #include "render/FrameCapture.h"
-#include "render/OffscreenWindow.h"
-#include "render/SceneRenderer.h"
+#include "render/SceneView.h"
 
 namespace aokit {
 
@@ -27,16 +26,9 @@ namespace {
 ReferenceSummary referenceFor(const Scene& scene, const SurfaceSamples& surfaces, const BenchConfig& cfg,
                               AOBuffer& reference) {
   EmbreeScene embree(*scene.root);
-  ReferenceOptions opt;
-  opt.samples = cfg.refSamples;
-  opt.radius = scene.root->aoRadius();
-  opt.falloff = scene.root->falloff();
-  opt.seed = cfg.seed;
+  ReferenceOptions opt = sceneReferenceOptions(*scene.root, cfg.refSamples, cfg.seed);
   Progress progress("reference " + scene.name, cfg.progress);
-  opt.progress = [&](double f) {
-    throwIfInterrupted();
-    progress.update(f);
-  };
+  opt.progress = progress.reporter();
   ReferenceStats stats;
   reference = computeReferenceAO(embree, surfaces, opt, &stats);
   progress.done();
@@ -65,11 +57,9 @@ BenchOutput runBench(const BenchConfig& cfg) {
   for (const auto& name : cfg.scenes) {
     throwIfInterrupted();
     Scene scene = cfg.loadScene(name);
-    OffscreenWindow window(cfg.width, cfg.height);
-    SceneRenderer renderer(window.renderer());
-    renderer.setScene(scene.root);
-    renderer.sync();
-    renderer.applyCamera(scene.camera);
+    SceneView view(scene, cfg.width, cfg.height);
+    OffscreenWindow& window = view.window;
+    SceneRenderer& renderer = view.renderer;
     const SurfaceSamples surfaces = captureSurfaces(window, renderer);
     std::size_t covered = 0;
     for (auto c : surfaces.covered) covered += c;

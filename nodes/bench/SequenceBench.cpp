@@ -12,8 +12,7 @@
 #include "reference/EmbreeScene.h"
 #include "reference/Metrics.h"
 #include "render/FrameCapture.h"
-#include "render/OffscreenWindow.h"
-#include "render/SceneRenderer.h"
+#include "render/SceneView.h"
 
 namespace aokit {
 
@@ -38,9 +37,9 @@ std::vector<SequenceRow> runSequenceBench(const SequenceConfig& cfg) {
     throw std::invalid_argument(cfg.scene + ": not an animated scene (temporal stability needs one)");
   const Camera camera = scene.camera;  // held: see the header
 
-  OffscreenWindow window(cfg.width, cfg.height);
-  SceneRenderer renderer(window.renderer());
-  renderer.setScene(scene.root);
+  SceneView view(scene, cfg.width, cfg.height);
+  OffscreenWindow& window = view.window;
+  SceneRenderer& renderer = view.renderer;
   std::vector<SurfaceSamples> surfaces;
   std::vector<AOBuffer> references;
   std::vector<std::vector<AOBuffer>> methodFrames(runs.size());
@@ -54,13 +53,9 @@ std::vector<SequenceRow> runSequenceBench(const SequenceConfig& cfg) {
     renderer.applyCamera(camera);
     surfaces.push_back(captureSurfaces(window, renderer));
     EmbreeScene embree(*scene.root);
-    ReferenceOptions opt;
-    opt.samples = cfg.refSamples;
-    opt.radius = scene.root->aoRadius();
-    opt.falloff = scene.root->falloff();
     // Same seed every frame: a static pixel with unchanged surroundings gets the same rays and the
     // same value, so the reference's change is the true change, not its sampling noise.
-    opt.seed = cfg.seed;
+    const ReferenceOptions opt = sceneReferenceOptions(*scene.root, cfg.refSamples, cfg.seed);
     references.push_back(computeReferenceAO(embree, surfaces.back(), opt));
     for (std::size_t r = 0; r < runs.size(); ++r) {
       scene.root->setTechnique(makeTechnique(runs[r].first, runs[r].second));

@@ -31,6 +31,13 @@ void Progress::update(double fraction) {
   std::fflush(stderr);
 }
 
+std::function<void(double)> Progress::reporter() {
+  return [this](double f) {
+    throwIfInterrupted();
+    update(f);
+  };
+}
+
 void Progress::done() {
   if (!enabled_) return;
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();

@@ -1,6 +1,7 @@
 #pragma once
 // Progress lines for long jobs (bake, reference, bench) and a cooperative Ctrl-C.
 #include <chrono>
+#include <functional>
 #include <string>
 
 namespace aokit {
@@ -11,6 +12,8 @@ class Progress {
   explicit Progress(std::string label, bool enabled = true);
   void update(double fraction);
   void done();
+  // A callback for long jobs: reports the fraction and throws "interrupted" after Ctrl-C.
+  std::function<void(double)> reporter();
 
  private:
   std::string label_;

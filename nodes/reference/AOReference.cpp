@@ -217,4 +217,13 @@ double measureRawOccludedThroughput(const EmbreeScene& scene, const SurfaceSampl
   return seconds > 0.0 ? rays.size() / seconds : 0.0;
 }
 
+ReferenceOptions sceneReferenceOptions(const AOScene& root, int samples, std::uint64_t seed) {
+  ReferenceOptions opt;
+  opt.samples = samples;
+  opt.radius = root.aoRadius();
+  opt.falloff = root.falloff();
+  opt.seed = seed;
+  return opt;
+}
+
 }  // namespace aokit

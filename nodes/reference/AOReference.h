@@ -28,6 +28,9 @@ struct ReferenceOptions {
   std::function<void(double)> progress;  //!< fraction done, on the calling thread; throw to cancel
 };
 
+// Options for a scene's own AO radius and falloff.
+ReferenceOptions sceneReferenceOptions(const AOScene& root, int samples, std::uint64_t seed);
+
 struct ReferenceStats {
   double raysPerSecond = 0.0;  // AO rays / seconds
   double seconds = 0.0;        // wall time of the ray-casting phase (probes and sampling included)
