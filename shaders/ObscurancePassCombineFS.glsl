@@ -79,7 +79,7 @@ void main()
 #if OBS_DEBUG_VIEW == 1
   col = vec4(vec3(1.0) - vec3(ao), 1.0);
 #elif OBS_DEBUG_VIEW == 2
-  col = vec4(covered ? texelFetch(obsNormal, pix, 0).xyz * 0.5 + 0.5 : vec3(0.0), 1.0);
+  col = vec4(covered ? texelFetch(obsNormal, pix, 0).xyz : vec3(0.0), 1.0);  // packed n * 0.5 + 0.5
 #elif OBS_DEBUG_VIEW == 3
   col = vec4(vec3(covered ? exp(z / (8.0 * obsRadius)) : 0.0), 1.0);
 #else

@@ -2,17 +2,16 @@
 // ObscurancePass, obscurance stage (seed 003, eqs. 8 and 9). For each pixel of the target (full
 // or half resolution) it casts OBS_SAMPLES rays from the view-space surface point x, to the
 // offsets of its 4x4 interleave cell's sample set (units of R, tangent frame from the normal), and
-// tests OBS_POINTS_PER_RAY points along each against the depth buffer (a containment test: a point
-// is inside when the surface stored at its pixel is in front of it). A ray is blocked when any of
-// its points is inside. Out 0: occlusion 1 - O in .r, or with OBS_TRANSFER the two sums of eq. 9
-// over n: .rgb = 1 - sum (1 - S_i) a_i / n (denominator per colour), .a = sum S_i / n (numerator).
-// Out 1: the view-space z of the pixel (+1 on background), for the filter and the upsampling.
-// Branch-free inside the loop: llvmpipe shades 8 fragments at once and pays for both sides of a
-// divergent branch.
+// tests OBS_POINTS_PER_RAY points along each against the depth buffer (a containment test). A ray is
+// blocked when any of its points is inside. Out 0: occlusion 1 - O in .r, or with OBS_TRANSFER the
+// two sums of eq. 9 over n: .rgb = 1 - sum (1 - S_i) a_i / n (denominator per colour), .a = sum
+// S_i / n (numerator). Out 1: the view-space z of the pixel (+1 on background), for the filter and
+// the upsampling. Positions are reconstructed from the depth buffer (lean G-buffer: depth and a
+// packed normal). Branch-free inside the loop: llvmpipe shades 8 fragments at once and pays for
+// both sides of a divergent branch.
 //AOKIT::Obscurance::Defines
 in vec2 texCoord;
-uniform sampler2D obsPosition;  // view-space position, w = 1 where covered (full resolution)
-uniform sampler2D obsNormal;    // view-space unit normal (full resolution)
+uniform sampler2D obsNormal;    // view-space unit normal as n * 0.5 + 0.5, a = 1 where covered
 uniform sampler2D obsDepth;     // window depth (full resolution)
 #if OBS_TRANSFER
 uniform sampler2D obsColor;     // albedo stand-in: the colour buffer (seed 003, end of 4.1)
@@ -29,18 +28,42 @@ uniform float obsBias;     // world units
 uniform float obsThickness;  // world units: silhouette-elimination window (R in the seed)
 //VTK::Output::Dec
 
+float obsViewZ(float depth)
+{
+  float ndc = 2.0 * depth - 1.0;
+  return (obsDepthToZ.y - ndc * obsDepthToZ.w) / (ndc * obsDepthToZ.z - obsDepthToZ.x);
+}
+
+// The view-space point at view depth z seen through NDC (x, y): the projection inverted for a
+// VTK camera (no skew; perspective or parallel, off-axis terms included).
+vec3 obsUnproject(vec2 ndc, float z)
+{
+  float w = obsClipW.z * z + obsClipW.w;
+  return vec3((ndc.x * w - obsClipX.z * z - obsClipX.w) / obsClipX.x,
+              (ndc.y * w - obsClipY.z * z - obsClipY.w) / obsClipY.y, z);
+}
+
+// The surface stored at full-resolution texel t: view-space point and packed normal (n.w = 0 on
+// background).
+vec3 obsSurface(ivec2 t, vec2 invSize, out vec4 n)
+{
+  n = texelFetch(obsNormal, t, 0);
+  return obsUnproject((vec2(t) + 0.5) * invSize * 2.0 - 1.0, obsViewZ(texelFetch(obsDepth, t, 0).r));
+}
+
 // 1 when view-space point p is inside (behind the surface stored at its pixel by more than the
 // bias), else 0; uv: its texture coordinates. Off-screen points and background pixels are open:
 // a screen-space method cannot see what is not on screen. With OBS_SILHOUETTE a surface more than
 // obsThickness in front of p is a foreground object, not an occluder (seed 003, 4.3: R > z - z* > 0).
+// (A test against the tangent plane of the surface at p's pixel was tried and measured worse:
+// points under thin slabs and beside convex objects lie behind those planes.)
 float obsInside(vec3 p, out vec2 uv)
 {
   vec4 h = vec4(p, 1.0);
   float w = dot(obsClipW, h);
   uv = vec2(dot(obsClipX, h), dot(obsClipY, h)) / w * 0.5 + 0.5;
   bool onScreen = w > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0)));
-  float ndc = 2.0 * textureLod(obsDepth, uv, 0.0).r - 1.0;
-  float dz = (obsDepthToZ.y - ndc * obsDepthToZ.w) / (ndc * obsDepthToZ.z - obsDepthToZ.x) - p.z;
+  float dz = obsViewZ(textureLod(obsDepth, uv, 0.0).r) - p.z;
 #if OBS_SILHOUETTE
   return (onScreen && dz > obsBias && dz < obsThickness) ? 1.0 : 0.0;
 #else
@@ -50,19 +73,21 @@ float obsInside(vec3 p, out vec2 uv)
 
 void main()
 {
-  ivec2 size = textureSize(obsPosition, 0);
+  ivec2 size = textureSize(obsDepth, 0);
+  vec2 invSize = 1.0 / vec2(size);
   ivec2 cell = ivec2(texCoord * vec2((size + OBS_DOWNSAMPLE - 1) / OBS_DOWNSAMPLE));  // target texel
   ivec2 centre = min(cell * OBS_DOWNSAMPLE, size - 1);  // the full-resolution pixel it stands for
-  vec4 x = texelFetch(obsPosition, centre, 0);
-  if (x.w < 0.5)  // background: divergent only along silhouettes
+  vec4 N;
+  vec3 x = obsSurface(centre, invSize, N);
+  if (N.w < 0.5)  // background: divergent only along silhouettes
   {
     gl_FragData[0] = OBS_TRANSFER != 0 ? vec4(1.0) : vec4(0.0);
     gl_FragData[1] = vec4(1.0);
     return;
   }
-  vec3 N = texelFetch(obsNormal, centre, 0).xyz;
-  vec3 T = normalize(cross(abs(N.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0), N));
-  mat3 toView = mat3(T, cross(N, T), N) * obsRadius;
+  N.xyz = normalize(N.xyz * 2.0 - 1.0);
+  vec3 T = normalize(cross(abs(N.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0), N.xyz));
+  mat3 toView = mat3(T, cross(N.xyz, T), N.xyz) * obsRadius;
 #if OBS_INTERLEAVED
   int set = ((cell.y & 3) * 4 + (cell.x & 3)) * OBS_SAMPLES;
 #else
@@ -82,7 +107,7 @@ void main()
     for (int k = 1; k <= OBS_POINTS_PER_RAY; ++k)
     {
       vec2 uvk;
-      float ink = obsInside(x.xyz + ray * (float(k) / float(OBS_POINTS_PER_RAY)), uvk);
+      float ink = obsInside(x + ray * (float(k) / float(OBS_POINTS_PER_RAY)), uvk);
       uv = inside > 0.0 ? uv : uvk;
       inside = max(inside, ink);
     }

@@ -26,6 +26,7 @@
 #include "render/OffscreenWindow.h"
 #include "render/SceneRenderer.h"
 #include "scenes/BuiltinScenes.h"
+#include "render/GBufferPass.h"
 #include "screen/ObscurancePass.h"
 #include "screen/ObscuranceTechnique.h"
 
@@ -243,7 +244,8 @@ TEST(ObscurancePass, HalfResolutionHoldsLessMemory) {
   SceneRig rig("sphere-plane");
   auto half = obscurance("scale=0.5"), full = obscurance("scale=1");
   rig.ao(half);
-  const std::size_t gbuffer = static_cast<std::size_t>(kW) * kH * 40;  // GBufferPass: 4 + 16 + 16 + 4 bytes
+  // Lean G-buffer: colour RGBA8 + depth 32F + packed normal RGB10_A2, no position target.
+  const std::size_t gbuffer = static_cast<std::size_t>(kW) * kH * 12;
   rig.scene.root->setTechnique(half);
   rig.renderer.sync();
   rig.window.render();
@@ -254,4 +256,31 @@ TEST(ObscurancePass, HalfResolutionHoldsLessMemory) {
   EXPECT_EQ(full->memoryBytes(), gbuffer + static_cast<std::size_t>(kW) * kH * 12);
   rig.scene.root->setTechnique(nullptr);
   rig.renderer.sync();
+}
+
+TEST(ObscurancePass, LeanGBufferDropsPositionsAndSwitchesBack) {
+  // The obscurance pass's G-buffer holds no position target (positions come from depth); the
+  // full layout, which the reference reads back, still works after switching lean off again.
+  SceneRig rig("sphere-plane");
+  vtkNew<GBufferPass> gbuffer;
+  rig.window.renderer()->SetPass(gbuffer);
+  std::vector<float> pos, nrm;
+  for (bool lean : {true, false}) {
+    gbuffer->SetLean(lean);
+    rig.window.render();
+    EXPECT_EQ(gbuffer->MemoryBytes(), static_cast<std::size_t>(kW) * kH * (lean ? 12 : 40));
+    EXPECT_EQ(gbuffer->GetPositionTexture() == nullptr, lean);
+    EXPECT_EQ(gbuffer->ReadBack(pos, nrm), !lean);
+  }
+  // The full read-back matches the positions captured for the reference (float-exact path).
+  std::size_t covered = 0, mismatched = 0;
+  for (std::size_t i = 0; i < rig.surfaces.covered.size(); ++i) {
+    const bool c = pos[4 * i + 3] > 0.5f;
+    covered += c;
+    mismatched += c != static_cast<bool>(rig.surfaces.covered[i]);
+  }
+  EXPECT_GT(covered, static_cast<std::size_t>(kW) * kH / 4);
+  EXPECT_EQ(mismatched, 0u);
+  rig.window.renderer()->SetPass(nullptr);
+  gbuffer->ReleaseGraphicsResources(rig.window.window());
 }

@@ -18,6 +18,7 @@
 
 #include "GBufferCopyFS.h"
 #include "GBufferOutputFS.h"
+#include "GBufferOutputLeanFS.h"
 
 namespace aokit {
 
@@ -29,6 +30,18 @@ GBufferPass::~GBufferPass() { delete CopyQuad; }
 
 void GBufferPass::SetDelegatePass(vtkRenderPass* delegate) {
   Delegate = delegate;
+  Modified();
+}
+
+void GBufferPass::SetLean(bool on) {
+  if (on == Lean) return;
+  Lean = on;
+  // The targets and the mappers' shaders change: drop the targets, and Modified() makes VTK
+  // rebuild the shaders (it keys them on this pass's MTime).
+  ColorTexture = PositionTexture = NormalTexture = DepthTexture = nullptr;
+  Framebuffer = nullptr;
+  Width = Height = 0;
+  LayoutTime.Modified();
   Modified();
 }
 
@@ -53,8 +66,12 @@ vtkSmartPointer<vtkTextureObject> makeTarget(vtkOpenGLRenderWindow* renWin, int 
 void GBufferPass::Allocate(vtkOpenGLRenderWindow* renWin, int w, int h) {
   if (!Framebuffer) {
     ColorTexture = makeTarget(renWin, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, VTK_UNSIGNED_CHAR, w, h);
-    PositionTexture = makeTarget(renWin, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, w, h);
-    NormalTexture = makeTarget(renWin, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, w, h);
+    if (Lean) {
+      NormalTexture = makeTarget(renWin, GL_RGB10_A2, GL_RGBA, GL_UNSIGNED_BYTE, 4, VTK_UNSIGNED_CHAR, w, h);
+    } else {
+      PositionTexture = makeTarget(renWin, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, w, h);
+      NormalTexture = makeTarget(renWin, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, w, h);
+    }
     DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
     DepthTexture->SetContext(renWin);
     DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -64,7 +81,7 @@ void GBufferPass::Allocate(vtkOpenGLRenderWindow* renWin, int w, int h) {
     Framebuffer->SetContext(renWin);
   } else if (w != Width || h != Height) {
     ColorTexture->Resize(w, h);
-    PositionTexture->Resize(w, h);
+    if (PositionTexture) PositionTexture->Resize(w, h);
     NormalTexture->Resize(w, h);
     DepthTexture->Resize(w, h);
   }
@@ -93,15 +110,18 @@ void GBufferPass::Render(const vtkRenderState* s) {
   Framebuffer->SaveCurrentBindingsAndBuffers();
   Framebuffer->Bind();
   Framebuffer->AddColorAttachment(0, ColorTexture);
-  Framebuffer->AddColorAttachment(1, PositionTexture);
-  Framebuffer->AddColorAttachment(2, NormalTexture);
+  if (Lean) {
+    Framebuffer->AddColorAttachment(1, NormalTexture);
+  } else {
+    Framebuffer->AddColorAttachment(1, PositionTexture);
+    Framebuffer->AddColorAttachment(2, NormalTexture);
+  }
   Framebuffer->AddDepthAttachment(DepthTexture);
-  Framebuffer->ActivateDrawBuffers(3);
+  Framebuffer->ActivateDrawBuffers(Attachments());
   Framebuffer->StartNonOrtho(w, h);
   // Background must read as "not covered" in the position/normal targets whatever VTK clears to.
   const float zero[4] = {0, 0, 0, 0};
-  glClearBufferfv(GL_COLOR, 1, zero);
-  glClearBufferfv(GL_COLOR, 2, zero);
+  for (int i = 1; i < Attachments(); ++i) glClearBufferfv(GL_COLOR, i, zero);
   Delegate->Render(s);
   NumberOfRenderedProps += Delegate->GetNumberOfRenderedProps();
   Framebuffer->UnBind();
@@ -151,24 +171,26 @@ bool GBufferPass::PostReplaceShaderValues(std::string&, std::string&, std::strin
                                           vtkProp*) {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper)) return true;
   if (fs.find("vertexVC") != std::string::npos && fs.find("normalVCVSOutput") != std::string::npos) {
-    vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Impl", GBufferOutputFS, false);
+    vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Impl", Lean ? GBufferOutputLeanFS : GBufferOutputFS, false);
   } else {
     // Without the varyings (no lighting, no normals) the surface cannot be described: leave it
     // out of the G-buffer rather than write garbage.
     vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Impl",
-                                 "gl_FragData[1] = vec4(0.0);\n  gl_FragData[2] = vec4(0.0);\n", false);
+                                 Lean ? "gl_FragData[1] = vec4(0.0);\n"
+                                      : "gl_FragData[1] = vec4(0.0);\n  gl_FragData[2] = vec4(0.0);\n",
+                                 false);
   }
   return true;
 }
 
 bool GBufferPass::SetShaderParameters(vtkShaderProgram*, vtkAbstractMapper* mapper, vtkProp*,
                                       vtkOpenGLVertexArrayObject*) {
-  Framebuffer->ActivateDrawBuffers(vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ? 3 : 1);
+  Framebuffer->ActivateDrawBuffers(vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ? Attachments() : 1);
   return true;
 }
 
 bool GBufferPass::ReadBack(std::vector<float>& positionsVC, std::vector<float>& normalsVC) {
-  if (!Framebuffer || Width == 0) return false;
+  if (!Framebuffer || Width == 0 || Lean) return false;
   const std::size_t n = static_cast<std::size_t>(Width) * Height * 4;
   positionsVC.resize(n);
   normalsVC.resize(n);
@@ -185,7 +207,8 @@ bool GBufferPass::ReadBack(std::vector<float>& positionsVC, std::vector<float>& 
 }
 
 std::size_t GBufferPass::MemoryBytes() const {
-  return static_cast<std::size_t>(Width) * Height * (4 + 16 + 16 + 4);
+  // Colour RGBA8 and depth 32F, then position + normal (2 x RGBA32F) or the packed normal.
+  return static_cast<std::size_t>(Width) * Height * (4 + 4 + (Lean ? 4 : 16 + 16));
 }
 
 void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {

@@ -7,10 +7,16 @@
 // Then it copies colour and depth to the framebuffer it was called with, so it can stand alone
 // in a pipeline. AO passes read its textures; the reference reads them back to the CPU.
 // Positions are 32-bit floats (vtkSSAOPass uses 16-bit): the reference needs them exact.
+//
+// Lean mode (SetLean(true), for AO passes that reconstruct positions from depth): no position
+// target, and the normal packed as n * 0.5 + 0.5 in RGB10_A2 (a = 1 where covered). 12 bytes a
+// pixel instead of 40: on a CPU rasterizer the G-buffer's write bandwidth is most of its cost.
+// ReadBack needs the full layout and returns false in lean mode.
 #include <vector>
 
 #include <vtkOpenGLRenderPass.h>
 #include <vtkSmartPointer.h>
+#include <vtkTimeStamp.h>
 
 #include <vtkOpenGLFramebufferObject.h>  // held by vtkSmartPointer
 #include <vtkTextureObject.h>
@@ -28,6 +34,9 @@ class GBufferPass : public vtkOpenGLRenderPass {
   vtkRenderPass* GetDelegatePass() const { return Delegate; }
   // Copy colour and depth into the outer framebuffer after rendering (default on).
   void SetCopyToOutput(bool on) { CopyToOutput = on; }
+  // Lean layout (see above); takes effect at the next Render (targets are rebuilt).
+  void SetLean(bool on);
+  bool GetLean() const { return Lean; }
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -38,10 +47,12 @@ class GBufferPass : public vtkOpenGLRenderPass {
                                vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
                            vtkOpenGLVertexArrayObject* vao) override;
+  // Mappers rebuild their shaders when this changes (the lean switch changes the outputs).
+  vtkMTimeType GetShaderStageMTime() override { return LayoutTime.GetMTime(); }
 
   vtkTextureObject* GetColorTexture() const { return ColorTexture; }
-  vtkTextureObject* GetPositionTexture() const { return PositionTexture; }
-  vtkTextureObject* GetNormalTexture() const { return NormalTexture; }
+  vtkTextureObject* GetPositionTexture() const { return PositionTexture; }  // null when lean
+  vtkTextureObject* GetNormalTexture() const { return NormalTexture; }      // packed when lean
   vtkTextureObject* GetDepthTexture() const { return DepthTexture; }
   vtkOpenGLFramebufferObject* GetFramebuffer() const { return Framebuffer; }
   int GetWidth() const { return Width; }
@@ -58,6 +69,7 @@ class GBufferPass : public vtkOpenGLRenderPass {
   ~GBufferPass() override;
 
  private:
+  int Attachments() const { return Lean ? 2 : 3; }  // colour, (position,) normal
   void Allocate(vtkOpenGLRenderWindow* renWin, int w, int h);
   void CopyToFramebuffer(vtkOpenGLRenderWindow* renWin);
 
@@ -66,6 +78,8 @@ class GBufferPass : public vtkOpenGLRenderPass {
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkOpenGLQuadHelper* CopyQuad = nullptr;
   bool CopyToOutput = true;
+  bool Lean = false;
+  vtkTimeStamp LayoutTime;
   int Width = 0, Height = 0;
 
   GBufferPass(const GBufferPass&) = delete;

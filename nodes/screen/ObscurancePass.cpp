@@ -63,7 +63,9 @@ ObscurancePass::ObscurancePass()
     : ObscuranceStage(std::make_unique<ScreenQuadStage>("obscurance", ObscurancePassObscuranceFS)),
       Filter(std::make_unique<ObscuranceFilter>()),
       CombineStage(std::make_unique<ScreenQuadStage>("combine", ObscurancePassCombineFS)),
-      AOOutputStage(std::make_unique<ScreenQuadStage>("AO output", ObscurancePassCombineFS)) {}
+      AOOutputStage(std::make_unique<ScreenQuadStage>("AO output", ObscurancePassCombineFS)) {
+  GBuffer->SetLean(true);  // positions come from the depth buffer
+}
 
 ObscurancePass::~ObscurancePass() = default;
 
@@ -147,10 +149,9 @@ void ObscurancePass::AllocateTargets(vtkOpenGLRenderWindow* renWin) {
 bool ObscurancePass::RenderObscurance(vtkOpenGLRenderWindow* renWin, vtkRenderer* r) {
   vtkShaderProgram* p = ObscuranceStage->ready(renWin, Constants.defines());
   if (!p) return false;
-  vtkTextureObject* inputs[] = {GBuffer->GetPositionTexture(), GBuffer->GetNormalTexture(), GBuffer->GetDepthTexture(),
-                                GBuffer->GetColorTexture()};
-  const char* names[] = {"obsPosition", "obsNormal", "obsDepth", "obsColor"};
-  const int count = Constants.transfer ? 4 : 3;
+  vtkTextureObject* inputs[] = {GBuffer->GetNormalTexture(), GBuffer->GetDepthTexture(), GBuffer->GetColorTexture()};
+  const char* names[] = {"obsNormal", "obsDepth", "obsColor"};
+  const int count = Constants.transfer ? 3 : 2;
   for (int i = 0; i < count; ++i) {
     inputs[i]->Activate();
     p->SetUniformi(names[i], inputs[i]->GetTextureUnit());

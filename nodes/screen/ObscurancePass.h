@@ -10,7 +10,9 @@
 //   renderer->SetPass(ao);
 //
 // Stages, each a full-screen fragment program (shaders/ObscurancePass<Stage>FS.glsl):
-//   1. G-buffer (GBufferPass): lit colour, view-space position and normal, depth.
+//   1. G-buffer (GBufferPass, lean layout: 12 B/pixel): lit colour, packed normal, depth; view
+//      positions are reconstructed from depth and the projection (a 32F position target made the
+//      G-buffer half of the AO time on llvmpipe).
 //   2. obscurance, at full or half resolution: n rays per pixel from a Poisson-disc set warped to
 //      mu'(r) cos/pi (eq. 8), one of 16 sets per 4x4 interleave cell, in a tangent frame from the
 //      normal; m points per ray are tested against the depth buffer, with silhouette elimination
@@ -75,7 +77,7 @@ class ObscurancePass : public vtkOpenGLRenderPass {
   // Returns false before the first frame.
   bool ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& ao);
 
-  // GPU bytes of every target it holds (G-buffer included).
+  // GPU bytes of every target it holds (lean G-buffer included).
   std::size_t MemoryBytes() const;
   GBufferPass* GetGBufferPass() const { return GBuffer; }
 
