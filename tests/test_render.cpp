@@ -14,6 +14,7 @@
 #include "render/FrameCapture.h"
 #include "render/OffscreenWindow.h"
 #include "render/SceneRenderer.h"
+#include "render/SceneView.h"
 
 using namespace aokit;
 
@@ -60,14 +61,10 @@ struct TestScene {
 };
 
 RGBAImage renderOnce(int w, int h) {
-  OffscreenWindow win(w, h);
   TestScene t;
-  SceneRenderer sr(win.renderer());
-  sr.setScene(t.scene.root);
-  sr.sync();
-  sr.applyCamera(t.scene.camera);
-  win.render();
-  return win.readColor();
+  SceneView view(t.scene, w, h);
+  view.window.render();
+  return view.window.readColor();
 }
 
 }  // namespace
@@ -124,12 +121,10 @@ TEST(GBuffer, FloorPixelsLieOnThePlaneWithUpNormals) {
 }
 
 TEST(SceneRenderer, MovingATransformUpdatesTheFrameWithoutRebuildingMeshes) {
-  OffscreenWindow win(80, 60);
   TestScene t;
-  SceneRenderer sr(win.renderer());
-  sr.setScene(t.scene.root);
-  sr.sync();
-  sr.applyCamera(t.scene.camera);
+  SceneView view(t.scene, 80, 60);
+  OffscreenWindow& win = view.window;
+  SceneRenderer& sr = view.renderer;
   win.render();
   const RGBAImage before = win.readColor();
   const auto uploads = sr.meshUploads();
@@ -175,12 +170,10 @@ TEST(SceneRenderer, SwapsTechniquesThroughAttachAndDetach) {
 }
 
 TEST(AOCapture, NoTechniqueMeansNoOcclusion) {
-  OffscreenWindow win(80, 60);
   TestScene t;
-  SceneRenderer sr(win.renderer());
-  sr.setScene(t.scene.root);
-  sr.sync();
-  sr.applyCamera(t.scene.camera);
+  SceneView view(t.scene, 80, 60);
+  OffscreenWindow& win = view.window;
+  SceneRenderer& sr = view.renderer;
   const SurfaceSamples s = captureSurfaces(win, sr);
   const AOBuffer ao = captureAO(win, sr, s.covered);
   for (std::size_t i = 0; i < ao.pixelCount(); ++i)
@@ -188,12 +181,10 @@ TEST(AOCapture, NoTechniqueMeansNoOcclusion) {
 }
 
 TEST(AOCapture, VtkSSAODarkensTheContactAndNotTheOpenFloor) {
-  OffscreenWindow win(160, 120);
   TestScene t;
-  SceneRenderer sr(win.renderer());
-  sr.setScene(t.scene.root);
-  sr.sync();
-  sr.applyCamera(t.scene.camera);
+  SceneView view(t.scene, 160, 120);
+  OffscreenWindow& win = view.window;
+  SceneRenderer& sr = view.renderer;
   const SurfaceSamples s = captureSurfaces(win, sr);
   t.scene.root->setTechnique(std::make_shared<VtkSSAOTechnique>());
   sr.sync();
