@@ -54,7 +54,10 @@ Scene resolveScene(const std::string& spec) {
 }
 
 void SceneOptions::add(CLI::App& cmd) {
-  cmd.add_option("--scene,-s", scene, "built-in scene name, .json scene file or mesh file")->capture_default_str();
+  std::string known;
+  for (const auto& n : builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;
+  cmd.add_option("--scene,-s", scene, "built-in scene (" + known + "), .json scene file or mesh file")
+      ->capture_default_str();
   cmd.add_option("--size", size, "image size WxH")->capture_default_str();
   cmd.add_option("--camera-position", cameraPosition, "camera position x y z")->expected(3)->delimiter(',');
   cmd.add_option("--focal-point", focalPoint, "camera focal point x y z")->expected(3)->delimiter(',');

@@ -55,7 +55,9 @@ void addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "render one frame of a scene to a PNG");
   args->scene.add(*cmd);
-  cmd->add_option("--method,-m", args->method, "AO method: none, vtkssao")->capture_default_str();
+  std::string known;
+  for (const auto& m : methods()) known += (known.empty() ? "" : ", ") + m.name;
+  cmd->add_option("--method,-m", args->method, "AO method: " + known)->capture_default_str();
   cmd->add_option("--setting", args->setting, "method settings, key=value[,key=value]");
   cmd->add_option("--output,-o", args->output, "PNG file to write")->capture_default_str();
   cmd->add_flag("--ao-only", args->aoOnly, "white, ambient-only material: the image shows 1 - AO");
