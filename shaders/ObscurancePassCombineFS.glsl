@@ -3,7 +3,9 @@
 // ObscurancePass, combine stage: brings the filtered occlusion to full resolution (depth-aware
 // upsampling when the obscurance ran at half resolution) and multiplies the lit colour by 1 - AO,
 // as vtkSSAOPass does; writes the G-buffer depth back so later passes still depth-test. With
-// OBS_OUTPUT_AO it writes the occlusion itself (the AO read-back); OBS_DEBUG_VIEW selects a view.
+// OBS_OUTPUT_AO it writes the occlusion itself (the AO read-back: -1, or a = 0, on background);
+// OBS_DEBUG_VIEW selects a view. The G-buffer may hold a guard band of obsGuard texels on each
+// side: screen pixel p is G-buffer texel p + obsGuard.
 //AOKIT::Obscurance::Defines
 #if OBS_TRANSFER
 #extension GL_ARB_gpu_shader5 : require
@@ -11,8 +13,9 @@
 in vec2 texCoord;
 uniform sampler2D obsAO;     // filter stage output (target resolution), 0 on background
 uniform sampler2D obsZ;      // view z at target resolution, +1 on background
-uniform sampler2D obsColor;  // full resolution
-uniform sampler2D obsDepth;  // full resolution
+uniform sampler2D obsColor;  // full resolution, guard band included
+uniform sampler2D obsDepth;  // full resolution, guard band included
+uniform ivec2 obsGuard;
 #if OBS_DEBUG_VIEW == 2
 uniform sampler2D obsNormal;
 #endif
@@ -66,20 +69,25 @@ OBS_AO_TYPE obsOcclusion(ivec2 pix, float z)
 
 void main()
 {
-  ivec2 pix = ivec2(texCoord * vec2(textureSize(obsDepth, 0)));
-  float depth = texelFetch(obsDepth, pix, 0).r;
+  ivec2 pix = ivec2(texCoord * vec2(textureSize(obsDepth, 0) - 2 * obsGuard));  // screen pixel
+  ivec2 g = pix + obsGuard;                                                       // its G-buffer texel
+  float depth = texelFetch(obsDepth, g, 0).r;
   float ndc = 2.0 * depth - 1.0;
   float z = (obsDepthToZ.y - ndc * obsDepthToZ.w) / (ndc * obsDepthToZ.z - obsDepthToZ.x);
   bool covered = depth < 1.0;
   OBS_AO_TYPE ao = covered ? obsOcclusion(pix, z) : OBS_AO_TYPE(0.0);
 #if OBS_OUTPUT_AO
-  gl_FragData[0] = vec4(vec3(ao), 1.0);
+#if OBS_TRANSFER
+  gl_FragData[0] = vec4(ao, covered ? 1.0 : 0.0);
 #else
-  vec4 col = texelFetch(obsColor, pix, 0);
+  gl_FragData[0] = vec4(covered ? ao : -1.0, 0.0, 0.0, 1.0);
+#endif
+#else
+  vec4 col = texelFetch(obsColor, g, 0);
 #if OBS_DEBUG_VIEW == 1
   col = vec4(vec3(1.0) - vec3(ao), 1.0);
 #elif OBS_DEBUG_VIEW == 2
-  col = vec4(covered ? texelFetch(obsNormal, pix, 0).xyz : vec3(0.0), 1.0);  // packed n * 0.5 + 0.5
+  col = vec4(covered ? texelFetch(obsNormal, g, 0).xyz : vec3(0.0), 1.0);  // packed n * 0.5 + 0.5
 #elif OBS_DEBUG_VIEW == 3
   col = vec4(vec3(covered ? exp(z / (8.0 * obsRadius)) : 0.0), 1.0);
 #else

@@ -12,7 +12,8 @@
 //AOKIT::Obscurance::Defines
 in vec2 texCoord;
 uniform sampler2D obsNormal;    // view-space unit normal as n * 0.5 + 0.5, a = 1 where covered
-uniform sampler2D obsDepth;     // window depth (full resolution)
+uniform sampler2D obsDepth;     // window depth (full resolution, guard band included)
+uniform ivec2 obsGuard;         // guard band: G-buffer texels on each side of the screen
 #if OBS_TRANSFER
 uniform sampler2D obsColor;     // albedo stand-in: the colour buffer (seed 003, end of 4.1)
 #endif
@@ -21,7 +22,8 @@ uniform vec3 obsOffsets[16 * OBS_SAMPLES];  // one set per 4x4 cell, row-major c
 #else
 uniform vec3 obsOffsets[OBS_SAMPLES];
 #endif
-uniform vec4 obsClipX, obsClipY, obsClipW;  // rows 0, 1 and 3 of the view -> clip matrix
+uniform vec4 obsClipX, obsClipY, obsClipW;  // rows 0, 1 and 3 of the view -> clip matrix (of the
+                                            // G-buffer's frustum: guard band included)
 uniform vec4 obsDepthToZ;  // (A, B, C, D): view z = (B - ndc D) / (ndc C - A)
 uniform float obsRadius;   // R, world units
 uniform float obsBias;     // world units
@@ -52,8 +54,8 @@ vec3 obsSurface(ivec2 t, vec2 invSize, out vec4 n)
 }
 
 // 1 when view-space point p is inside (behind the surface stored at its pixel by more than the
-// bias), else 0; uv: its texture coordinates. Off-screen points and background pixels are open:
-// a screen-space method cannot see what is not on screen. With OBS_SILHOUETTE a surface more than
+// bias), else 0; uv: its texture coordinates. Points outside the G-buffer (screen plus guard band)
+// and background pixels are open: a screen-space method cannot see what it did not draw. With OBS_SILHOUETTE a surface more than
 // obsThickness in front of p is a foreground object, not an occluder (seed 003, 4.3: R > z - z* > 0).
 // (A test against the tangent plane of the surface at p's pixel was tried and measured worse:
 // points under thin slabs and beside convex objects lie behind those planes.)
@@ -75,8 +77,10 @@ void main()
 {
   ivec2 size = textureSize(obsDepth, 0);
   vec2 invSize = 1.0 / vec2(size);
-  ivec2 cell = ivec2(texCoord * vec2((size + OBS_DOWNSAMPLE - 1) / OBS_DOWNSAMPLE));  // target texel
-  ivec2 centre = min(cell * OBS_DOWNSAMPLE, size - 1);  // the full-resolution pixel it stands for
+  ivec2 screen = size - 2 * obsGuard;
+  ivec2 cell = ivec2(texCoord * vec2((screen + OBS_DOWNSAMPLE - 1) / OBS_DOWNSAMPLE));  // target texel
+  // The G-buffer texel of the full-resolution screen pixel it stands for.
+  ivec2 centre = min(cell * OBS_DOWNSAMPLE, screen - 1) + obsGuard;
   vec4 N;
   vec3 x = obsSurface(centre, invSize, N);
   if (N.w < 0.5)  // background: divergent only along silhouettes

@@ -270,6 +270,12 @@ TEST(ObscuranceSettings, BadSettingsGiveOneLineErrors) {
   s = {};
   s.filterTolerance = 0.0;
   expectError(s, "filterTolerance");
+  s = {};
+  s.guard = -0.1;
+  expectError(s, "guard");
+  s = {};
+  s.guard = 0.6;
+  expectError(s, "guard");
   // No radius anywhere: nothing to size the rays with.
   EXPECT_THROW(makeObscuranceConstants(ObscuranceSettings{}, 0.0, Falloff::Binary), std::invalid_argument);
 }
@@ -290,6 +296,8 @@ TEST(ObscuranceSettings, RegistryRejectsBadValuesByName) {
   EXPECT_NE(message("interleave=spiral").find("interleave"), std::string::npos);
   EXPECT_NE(message("falloff=cubic").find("falloff"), std::string::npos);
   EXPECT_NE(message("view=xray").find("view"), std::string::npos);
+  EXPECT_NE(message("guard=0.7").find("guard"), std::string::npos);
+  EXPECT_EQ(message("guard=0.7").find('\n'), std::string::npos);
   EXPECT_NE(message("kernel=3").find("unknown setting"), std::string::npos);
   for (const auto& setting : methodInfo("obscurance").benchSettings)
     EXPECT_NO_THROW(makeTechnique("obscurance", setting)) << setting;

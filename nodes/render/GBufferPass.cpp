@@ -1,5 +1,10 @@
 #include "render/GBufferPass.h"
 
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <vtkCamera.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLError.h>
 #include <vtkOpenGLFramebufferObject.h>
@@ -9,6 +14,7 @@
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLShaderCache.h>
 #include <vtkOpenGLState.h>
+#include <vtkPropCollection.h>
 #include <vtkRenderState.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderer.h>
@@ -45,7 +51,40 @@ void GBufferPass::SetLean(bool on) {
   Modified();
 }
 
+void GBufferPass::SetGuardBand(double fraction) {
+  if (!(fraction >= 0.0 && fraction <= 1.0)) {
+    vtkErrorMacro("guard band must be in 0..1, got " << fraction);
+    return;
+  }
+  if (fraction == Guard) return;
+  Guard = fraction;
+  Modified();
+}
+
 namespace {
+// Puts the camera's projection, scaled in x and y, in place for the mappers while alive, and
+// restores the camera's explicit-projection state afterwards.
+class ScopedGuardProjection {
+ public:
+  ScopedGuardProjection(vtkCamera* camera, vtkMatrix4x4* scaled)
+      : camera_(camera), saved_(camera->GetExplicitProjectionTransformMatrix()),
+        savedUse_(camera->GetUseExplicitProjectionTransformMatrix()) {
+    camera_->SetExplicitProjectionTransformMatrix(scaled);
+    camera_->SetUseExplicitProjectionTransformMatrix(true);
+  }
+  ~ScopedGuardProjection() {
+    camera_->SetExplicitProjectionTransformMatrix(saved_);
+    camera_->SetUseExplicitProjectionTransformMatrix(savedUse_);
+  }
+  ScopedGuardProjection(const ScopedGuardProjection&) = delete;
+  ScopedGuardProjection& operator=(const ScopedGuardProjection&) = delete;
+
+ private:
+  vtkCamera* camera_;
+  vtkSmartPointer<vtkMatrix4x4> saved_;
+  bool savedUse_;
+};
+
 vtkSmartPointer<vtkTextureObject> makeTarget(vtkOpenGLRenderWindow* renWin, int internalFormat, int format,
                                               int dataType, int components, int vtkType, int w, int h) {
   auto t = vtkSmartPointer<vtkTextureObject>::New();
@@ -104,9 +143,42 @@ void GBufferPass::Render(const vtkRenderState* s) {
 
   int x, y, w, h;
   r->GetTiledSizeAndOrigin(&w, &h, &x, &y);
-  Allocate(renWin, w, h);
+  GuardX = static_cast<int>(std::lround(Guard * w));
+  GuardY = static_cast<int>(std::lround(Guard * h));
+  const int W = w + 2 * GuardX, H = h + 2 * GuardY;
+  Allocate(renWin, W, H);
+  // The projection of this frame, the one GetKeyMatrices hands the mappers (renderer's aspect);
+  // with a guard band, x and y shrink so that the viewport's frustum fills the centre w x h texels:
+  // window x' = (ndc sx + 1) W / 2 = (ndc + 1) w / 2 + GuardX.
+  vtkCamera* camera = r->GetActiveCamera();
+  Projection->DeepCopy(camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1, 1));
+  const bool guarded = GuardX > 0 || GuardY > 0;
+  const double scale[2] = {static_cast<double>(w) / W, static_cast<double>(h) / H};
+  for (int row = 0; row < 2; ++row)
+    for (int col = 0; col < 4; ++col) Projection->SetElement(row, col, Projection->GetElement(row, col) * scale[row]);
 
-  PreRender(s);
+  // With a guard band, the render state names the FBO: vtkCameraPass then sets the viewport and
+  // scissor to the FBO's size at (0, 0) rather than the renderer's tiled size and origin, and the
+  // prop list is every visible prop (the renderer culled against the smaller frustum).
+  vtkRenderState guardState(r);
+  std::vector<vtkProp*> props;
+  if (guarded) {
+    vtkPropCollection* all = r->GetViewProps();
+    vtkCollectionSimpleIterator it;
+    all->InitTraversal(it);
+    while (vtkProp* p = all->GetNextProp(it))
+      if (p->GetVisibility()) props.push_back(p);
+    guardState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+    guardState.SetFrameBuffer(Framebuffer);
+    guardState.SetRequiredKeys(s->GetRequiredKeys());
+  }
+  std::unique_ptr<ScopedGuardProjection> projection;
+  if (guarded) projection = std::make_unique<ScopedGuardProjection>(camera, Projection);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglScissor scissorSaver(state);
+
+  const vtkRenderState* rs = guarded ? &guardState : s;
+  PreRender(rs);
   Framebuffer->SaveCurrentBindingsAndBuffers();
   Framebuffer->Bind();
   Framebuffer->AddColorAttachment(0, ColorTexture);
@@ -118,15 +190,17 @@ void GBufferPass::Render(const vtkRenderState* s) {
   }
   Framebuffer->AddDepthAttachment(DepthTexture);
   Framebuffer->ActivateDrawBuffers(Attachments());
-  Framebuffer->StartNonOrtho(w, h);
+  Framebuffer->StartNonOrtho(W, H);
+  state->vtkglScissor(0, 0, W, H);  // glClearBuffer obeys the scissor
   // Background must read as "not covered" in the position/normal targets whatever VTK clears to.
   const float zero[4] = {0, 0, 0, 0};
   for (int i = 1; i < Attachments(); ++i) glClearBufferfv(GL_COLOR, i, zero);
-  Delegate->Render(s);
+  Delegate->Render(rs);
   NumberOfRenderedProps += Delegate->GetNumberOfRenderedProps();
   Framebuffer->UnBind();
   Framebuffer->RestorePreviousBindingsAndBuffers();
-  PostRender(s);
+  projection.reset();
+  PostRender(rs);
 
   if (CopyToOutput) {
     state->vtkglViewport(x, y, w, h);
@@ -154,6 +228,10 @@ void GBufferPass::CopyToFramebuffer(vtkOpenGLRenderWindow* renWin) {
   DepthTexture->Activate();
   CopyQuad->Program->SetUniformi("texColor", ColorTexture->GetTextureUnit());
   CopyQuad->Program->SetUniformi("texDepth", DepthTexture->GetTextureUnit());
+  // The viewport's part of the targets: texCoord * scale + offset.
+  const float region[4] = {static_cast<float>(GetScreenWidth()) / Width, static_cast<float>(GetScreenHeight()) / Height,
+                           static_cast<float>(GuardX) / Width, static_cast<float>(GuardY) / Height};
+  CopyQuad->Program->SetUniform4f("texRegion", region);
   CopyQuad->Render();
   ColorTexture->Deactivate();
   DepthTexture->Deactivate();
@@ -218,7 +296,7 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {
   CopyQuad = nullptr;
   ColorTexture = PositionTexture = NormalTexture = DepthTexture = nullptr;
   Framebuffer = nullptr;
-  Width = Height = 0;
+  Width = Height = GuardX = GuardY = 0;
 }
 
 }  // namespace aokit

@@ -12,8 +12,17 @@
 // target, and the normal packed as n * 0.5 + 0.5 in RGB10_A2 (a = 1 where covered). 12 bytes a
 // pixel instead of 40: on a CPU rasterizer the G-buffer's write bandwidth is most of its cost.
 // ReadBack needs the full layout and returns false in lean mode.
+//
+// Guard band (SetGuardBand(g), default 0): the scene is drawn for an enlarged frustum, the same
+// camera with the projection scaled so that the original view fills the centre, into targets
+// enlarged by round(g w) and round(g h) pixels on each side. On-screen pixel (i, j) is texel
+// (i + GetGuardX(), j + GetGuardY()) of every target; GetProjection() is the view -> clip matrix the
+// mappers used. Props the renderer culled are drawn too (they may lie in the band); 2D overlay
+// actors would land off their place in the colour target.
 #include <vector>
 
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
 #include <vtkOpenGLRenderPass.h>
 #include <vtkSmartPointer.h>
 #include <vtkTimeStamp.h>
@@ -37,6 +46,9 @@ class GBufferPass : public vtkOpenGLRenderPass {
   // Lean layout (see above); takes effect at the next Render (targets are rebuilt).
   void SetLean(bool on);
   bool GetLean() const { return Lean; }
+  // Guard band as a fraction of the viewport size added on each side, 0..1; next Render.
+  void SetGuardBand(double fraction);
+  double GetGuardBand() const { return Guard; }
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -55,11 +67,17 @@ class GBufferPass : public vtkOpenGLRenderPass {
   vtkTextureObject* GetNormalTexture() const { return NormalTexture; }      // packed when lean
   vtkTextureObject* GetDepthTexture() const { return DepthTexture; }
   vtkOpenGLFramebufferObject* GetFramebuffer() const { return Framebuffer; }
-  int GetWidth() const { return Width; }
+  int GetWidth() const { return Width; }    // of the targets: the viewport plus the guard band
   int GetHeight() const { return Height; }
+  int GetGuardX() const { return GuardX; }  // guard band of the last frame, pixels on each side
+  int GetGuardY() const { return GuardY; }
+  int GetScreenWidth() const { return Width - 2 * GuardX; }  // the viewport
+  int GetScreenHeight() const { return Height - 2 * GuardY; }
+  // View -> clip matrix of the last frame (VTK's, row-major; rows 0 and 1 scaled with a guard band).
+  vtkMatrix4x4* GetProjection() const { return Projection; }
 
   // Reads attachment 1 (positions) and 2 (normals) of the last frame: 4 floats a pixel, bottom
-  // row first. The context must be current. Returns false before the first Render.
+  // row first, whole targets (guard band included). The context must be current. Returns false before the first Render.
   bool ReadBack(std::vector<float>& positionsVC, std::vector<float>& normalsVC);
   // GPU bytes held by the targets.
   std::size_t MemoryBytes() const;
@@ -81,6 +99,9 @@ class GBufferPass : public vtkOpenGLRenderPass {
   bool Lean = false;
   vtkTimeStamp LayoutTime;
   int Width = 0, Height = 0;
+  double Guard = 0.0;
+  int GuardX = 0, GuardY = 0;
+  vtkNew<vtkMatrix4x4> Projection;
 
   GBufferPass(const GBufferPass&) = delete;
   void operator=(const GBufferPass&) = delete;

@@ -78,7 +78,7 @@ void ObscurancePass::PrintSelf(ostream& os, vtkIndent indent) {
      << ", Filter: " << Settings.filter << "\n"
      << indent << "SilhouetteElimination: " << Settings.silhouetteElimination
      << ", AmbientTransfer: " << Settings.ambientTransfer << "\n"
-     << indent << "ResolutionScale: " << Settings.resolutionScale << "\n";
+     << indent << "ResolutionScale: " << Settings.resolutionScale << ", Guard: " << Settings.guard << "\n";
 }
 
 void ObscurancePass::SetDelegatePass(vtkRenderPass* delegate) {
@@ -91,6 +91,7 @@ vtkRenderPass* ObscurancePass::GetDelegatePass() const { return GBuffer->GetDele
 void ObscurancePass::SetSettings(const ObscuranceSettings& s) {
   validate(s);
   Settings = s;
+  GBuffer->SetGuardBand(s.guard);
   ConstantsValid = false;
   Modified();
 }
@@ -127,7 +128,8 @@ void ObscurancePass::UpdateConstants(vtkRenderer* r) {
 
 void ObscurancePass::AllocateTargets(vtkOpenGLRenderWindow* renWin) {
   const int ds = Constants.downsample;
-  const int w = (GBuffer->GetWidth() + ds - 1) / ds, h = (GBuffer->GetHeight() + ds - 1) / ds;
+  // On-screen pixels only: the guard band is read by the containment tests, never shaded.
+  const int w = (GBuffer->GetScreenWidth() + ds - 1) / ds, h = (GBuffer->GetScreenHeight() + ds - 1) / ds;
   if (!Framebuffer) {
     Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     Framebuffer->SetContext(renWin);
@@ -146,7 +148,7 @@ void ObscurancePass::AllocateTargets(vtkOpenGLRenderWindow* renWin) {
   TargetHeight = h;
 }
 
-bool ObscurancePass::RenderObscurance(vtkOpenGLRenderWindow* renWin, vtkRenderer* r) {
+bool ObscurancePass::RenderObscurance(vtkOpenGLRenderWindow* renWin) {
   vtkShaderProgram* p = ObscuranceStage->ready(renWin, Constants.defines());
   if (!p) return false;
   vtkTextureObject* inputs[] = {GBuffer->GetNormalTexture(), GBuffer->GetDepthTexture(), GBuffer->GetColorTexture()};
@@ -157,8 +159,9 @@ bool ObscurancePass::RenderObscurance(vtkOpenGLRenderWindow* renWin, vtkRenderer
     p->SetUniformi(names[i], inputs[i]->GetTextureUnit());
   }
   p->SetUniform3fv("obsOffsets", static_cast<int>(Constants.offsets.size()), &Constants.offsets[0].x);
-  // VTK's view -> clip matrix, the one the mappers used for this frame (row-major, column vectors).
-  vtkMatrix4x4* m = r->GetActiveCamera()->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1, 1);
+  // VTK's view -> clip matrix, the one the mappers used for this frame (row-major, column vectors;
+  // with a guard band, the enlarged frustum's).
+  vtkMatrix4x4* m = GBuffer->GetProjection();
   float rows[4][4];
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) rows[i][j] = static_cast<float>(m->GetElement(i, j));
@@ -174,6 +177,7 @@ bool ObscurancePass::RenderObscurance(vtkOpenGLRenderWindow* renWin, vtkRenderer
   p->SetUniformf("obsRadius", Constants.radius);
   p->SetUniformf("obsBias", Constants.bias);
   p->SetUniformf("obsThickness", Constants.thickness);
+  p->SetUniform2i("obsGuard", Guard);
   ObscuranceStage->renderInto(Framebuffer, RawTarget, ZTarget);
   for (int i = count - 1; i >= 0; --i) inputs[i]->Deactivate();
   return true;
@@ -195,6 +199,7 @@ bool ObscurancePass::BindCombine(ScreenQuadStage& stage, vtkOpenGLRenderWindow* 
   p->SetUniform4f("obsDepthToZ", DepthToZ);
   p->SetUniformf("obsFilterTolerance", Constants.filterTolerance);
   p->SetUniformf("obsRadius", Constants.radius);
+  p->SetUniform2i("obsGuard", Guard);
   draw();
   for (int i = count - 1; i >= 0; --i) inputs[i]->Deactivate();
   return true;
@@ -227,10 +232,12 @@ void ObscurancePass::Render(const vtkRenderState* s) {
 
   int x, y, w, h;
   r->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  Guard[0] = GBuffer->GetGuardX();
+  Guard[1] = GBuffer->GetGuardY();
   AllocateTargets(renWin);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_DEPTH_TEST);
-  if (!RenderObscurance(renWin, r)) return;
+  if (!RenderObscurance(renWin)) return;
   if (!Filter->run(renWin, Framebuffer, RawTarget, ZTarget, FilteredTarget, Constants)) return;
 
   state->vtkglViewport(x, y, w, h);
@@ -242,9 +249,10 @@ void ObscurancePass::Render(const vtkRenderState* s) {
   vtkOpenGLCheckErrorMacro("failed after ObscurancePass::Render");
 }
 
-bool ObscurancePass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& ao) {
+bool ObscurancePass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& ao,
+                            std::vector<std::uint8_t>* covered) {
   if (!HasFrame) return false;
-  const int w = GBuffer->GetWidth(), h = GBuffer->GetHeight();
+  const int w = GBuffer->GetScreenWidth(), h = GBuffer->GetScreenHeight();
   vtkOpenGLState* state = renWin->GetState();
   StateGuards guards(state);
   state->vtkglDisable(GL_BLEND);
@@ -269,9 +277,14 @@ bool ObscurancePass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& a
     vtkErrorMacro("the AO output stage did not compile (log above)");
     return false;
   }
+  // The AO output marks background -1 (a = 0 with four channels).
   ao.resize(static_cast<std::size_t>(w) * h);
-  for (std::size_t i = 0; i < ao.size(); ++i)
-    ao[i] = TargetsRGBA ? (pixels[4 * i] + pixels[4 * i + 1] + pixels[4 * i + 2]) / 3.0f : pixels[i];
+  if (covered) covered->resize(ao.size());
+  for (std::size_t i = 0; i < ao.size(); ++i) {
+    const bool c = TargetsRGBA ? pixels[4 * i + 3] > 0.5f : pixels[i] >= 0.0f;
+    ao[i] = !c ? 0.0f : TargetsRGBA ? (pixels[4 * i] + pixels[4 * i + 1] + pixels[4 * i + 2]) / 3.0f : pixels[i];
+    if (covered) (*covered)[i] = c;
+  }
   vtkOpenGLCheckErrorMacro("failed after ObscurancePass::ReadAO");
   return true;
 }

@@ -12,7 +12,9 @@
 // Stages, each a full-screen fragment program (shaders/ObscurancePass<Stage>FS.glsl):
 //   1. G-buffer (GBufferPass, lean layout: 12 B/pixel): lit colour, packed normal, depth; view
 //      positions are reconstructed from depth and the projection (a 32F position target made the
-//      G-buffer half of the AO time on llvmpipe).
+//      G-buffer half of the AO time on llvmpipe). With a guard band (settings.guard = g) it covers
+//      an enlarged frustum, (1 + 2 g) times the screen in each dimension, the screen in its centre:
+//      only on-screen pixels get AO, but their containment tests read the whole G-buffer.
 //   2. obscurance, at full or half resolution: n rays per pixel from a Poisson-disc set warped to
 //      mu'(r) cos/pi (eq. 8), one of 16 sets per 4x4 interleave cell, in a tangent frame from the
 //      normal; m points per ray are tested against the depth buffer, with silhouette elimination
@@ -28,6 +30,7 @@
 // when they change), the rest uniforms. GL state is restored by scoped guards; a stage that fails
 // to compile is reported once with vtkErrorMacro and the frame is shown without AO.
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,8 +77,8 @@ class ObscurancePass : public vtkOpenGLRenderPass {
   // The last frame's occlusion at full resolution (upsampled like the combine stage), one float
   // per pixel in [0, 1], bottom row first; with ambient transfer, 1 - W averaged over colours.
   // Renders into a temporary target that is released afterwards. The context must be current.
-  // Returns false before the first frame.
-  bool ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& ao);
+  // Returns false before the first frame. `covered` (optional): 1 where a surface was drawn.
+  bool ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& ao, std::vector<std::uint8_t>* covered = nullptr);
 
   // GPU bytes of every target it holds (lean G-buffer included).
   std::size_t MemoryBytes() const;
@@ -88,7 +91,7 @@ class ObscurancePass : public vtkOpenGLRenderPass {
  private:
   void UpdateConstants(vtkRenderer* r);
   void AllocateTargets(vtkOpenGLRenderWindow* renWin);
-  bool RenderObscurance(vtkOpenGLRenderWindow* renWin, vtkRenderer* r);
+  bool RenderObscurance(vtkOpenGLRenderWindow* renWin);
   // Binds the combine program (frame or AO-output variant) and its inputs, then calls draw().
   template <class Draw>
   bool BindCombine(ScreenQuadStage& stage, vtkOpenGLRenderWindow* renWin, const std::string& defines, Draw&& draw);
@@ -104,7 +107,8 @@ class ObscurancePass : public vtkOpenGLRenderPass {
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   // At the obscurance resolution: raw and filtered AO, and view z (MRT output of the obscurance stage).
   vtkSmartPointer<vtkTextureObject> RawTarget, FilteredTarget, ZTarget;
-  float DepthToZ[4] = {0, 0, 0, 0};  // window depth -> view z, from the last frame's projection
+  float DepthToZ[4] = {0, 0, 0, 0};
+  int Guard[2] = {0, 0};  // guard band of the last frame, G-buffer texels on each side  // window depth -> view z, from the last frame's projection
   int TargetWidth = 0, TargetHeight = 0;
   bool TargetsRGBA = false;
   std::unique_ptr<ScreenQuadStage> ObscuranceStage;

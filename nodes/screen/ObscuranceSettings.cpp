@@ -29,6 +29,8 @@ void validate(const ObscuranceSettings& s) {
     fail("thickness", "in (0, 4] (a fraction of R)", s.thickness);
   if (!finite(s.filterTolerance) || s.filterTolerance <= 0.0 || s.filterTolerance > 1.0)
     fail("filterTolerance", "in (0, 1]", s.filterTolerance);
+  if (!finite(s.guard) || s.guard < 0.0 || s.guard > 0.5)
+    fail("guard", "in 0..0.5 (a fraction of the screen size on each side)", s.guard);
 }
 
 std::string ObscuranceConstants::defines() const {

@@ -36,6 +36,9 @@ struct ObscuranceSettings {
   double bias = 0.02;               //!< depth bias of the containment test, fraction of R, 0..0.5
   double filterTolerance = 0.03;    //!< filter/upsampling skip neighbours whose view depth differs
                                     //!< by more than this fraction of the centre's, (0, 1]
+  double guard = 0.0;               //!< guard band: the G-buffer covers this fraction of the screen
+                                    //!< size more on each side, 0..0.5, so that rays near the screen
+                                    //!< edges find occluders just off screen (G-buffer cost x (1+2g)^2)
   ObscuranceDebugView debugView = ObscuranceDebugView::None;
 };
 
