@@ -85,15 +85,16 @@ void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows
             << fmt("%.2f", r->memoryBytes / 1048576.0) << " |\n";
     }
     if (!sequence.empty()) {
-      out << "\n## Temporal stability (" << sequence.front().scene << ", " << sequence.front().frames
-          << " frames, camera held, " << sequence.front().staticPixels << " static pixels)\n\n"
-          << "Mean frame-to-frame change of AO on surfaces that do not move; the reference's own change beside it (the "
-             "true change: it casts the same rays every frame, so its noise does not flicker).\n\n| method | setting | change | reference change | mean RMSE |\n"
-             "|---|---|---|---|---|\n";
+      out << "\n## Temporal stability (" << sequence.front().scene << ", " << sequence.front().frames << " frames)\n\n"
+          << "Mean frame-to-frame change of AO at surface points seen in both frames (found by reprojecting "
+             "the G-buffer), with the camera held and moving along the scene's path; the reference's own change "
+             "beside it (same seed every frame: with a held camera it is the true change, with a moving one it "
+             "also holds its noise).\n\n| camera | method | setting | change | reference change | mean RMSE | "
+             "points/pair |\n|---|---|---|---|---|---|---|\n";
       for (const auto& r : sequence)
-        out << "| " << r.method << " | " << (r.setting.empty() ? "-" : r.setting) << " | "
+        out << "| " << r.camera << " | " << r.method << " | " << (r.setting.empty() ? "-" : r.setting) << " | "
             << fmt("%.4f", r.temporalChange) << " | " << fmt("%.4f", r.refTemporalChange) << " | "
-            << fmt("%.4f", r.meanRmse) << " |\n";
+            << fmt("%.4f", r.meanRmse) << " | " << r.matchedPixels << " |\n";
     }
     if (!out) throw std::runtime_error(path + ": cannot write");
   });

@@ -31,11 +31,12 @@ void writeBenchCsv(const std::string& path, const std::vector<BenchRow>& rows);
 // One method over an animated sequence (see SequenceBench.h).
 struct SequenceRow {
   std::string scene, method, setting;
+  std::string camera;            // "held" or "moving"
   int frames = 0;
-  double temporalChange = 0;     // mean |AO_t - AO_t-1| on static surfaces
-  double refTemporalChange = 0;  // the reference's, same pixels
+  double temporalChange = 0;     // mean |AO_t - AO_t-1| over surface points seen in both frames
+  double refTemporalChange = 0;  // the reference's, same points
   double meanRmse = 0;           // RMSE against the reference, averaged over frames
-  std::size_t staticPixels = 0;
+  std::size_t matchedPixels = 0;  // surface points compared per frame pair (mean)
 };
 
 // Markdown: the rows as tables per scene, the reference summaries, the temporal rows (optional),

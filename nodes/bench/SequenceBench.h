@@ -1,10 +1,10 @@
 #pragma once
-// Temporal stability over an animated scene: with the camera held at its first-frame pose, the
-// mean frame-to-frame change of each method's AO on surfaces that stay put (pixels whose surface
-// point does not move in any frame), beside the same measure of the reference, whose own change
-// is the true change (it casts the same rays every frame, so its noise does not flicker). A method
-// that flickers shows more than the reference.
-// (With a moving camera no pixel sees the same surface twice without reprojection; not done.)
+// Temporal stability over an animated scene, run twice: with the camera held at its first-frame
+// pose, and with it following the scene's camera path. Between consecutive frames, the surface
+// points seen in both are found by reprojecting the G-buffer (SurfaceMatch.h), and the mean change
+// of each method's AO there is set beside the reference's. The reference casts the same rays
+// every frame, so with a held camera its change is the true change; a method that flickers or
+// swims shows more than the reference.
 #include <functional>
 #include <string>
 #include <utility>
