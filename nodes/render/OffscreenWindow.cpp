@@ -1,12 +1,10 @@
 #include "render/OffscreenWindow.h"
 
-
 #include <algorithm>
 #include <stdexcept>
 
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
-
 #include <vtkUnsignedCharArray.h>
 #include <vtk_glew.h>
 
@@ -22,16 +20,16 @@ struct OffscreenWindow::Impl {
 };
 
 namespace {
-int checkedSide(int side, int width, int height) {
+void checkSize(int width, int height) {
   if (width < 1 || height < 1 || width > OffscreenWindow::kMaxSide || height > OffscreenWindow::kMaxSide)
     throw std::runtime_error("image size " + std::to_string(width) + "x" + std::to_string(height) +
                              " is out of range (1.." + std::to_string(OffscreenWindow::kMaxSide) + " per side)");
-  return side;
 }
 }  // namespace
 
 OffscreenWindow::OffscreenWindow(int width, int height)
-    : width_(checkedSide(width, width, height)), height_(checkedSide(height, width, height)) {
+    : width_(width), height_(height) {
+  checkSize(width, height);
   impl_ = std::make_unique<Impl>(width, height);
   makeCurrent();
 
@@ -56,9 +54,7 @@ OffscreenWindow::~OffscreenWindow() {
 vtkRenderer* OffscreenWindow::renderer() const { return impl_->renderer; }
 vtkGenericOpenGLRenderWindow* OffscreenWindow::window() const { return impl_->window; }
 
-void OffscreenWindow::makeCurrent() {
-  impl_->context.makeCurrent();
-}
+void OffscreenWindow::makeCurrent() { impl_->context.makeCurrent(); }
 
 void OffscreenWindow::render() {
   makeCurrent();
