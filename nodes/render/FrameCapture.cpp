@@ -5,7 +5,9 @@
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkMatrix4x4.h>
+#include <vtkRenderPass.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
 
 #include "core/AOScene.h"
 #include "render/GBufferPass.h"
@@ -16,28 +18,30 @@ namespace aokit {
 
 namespace {
 
-// Runs f with the scene's technique taken off and the renderer's pass replaced by `pass`.
-template <class F>
-void withPass(SceneRenderer& scene, vtkRenderer* renderer, vtkRenderPass* pass, F&& f) {
-  auto technique = scene.scene()->technique();
-  scene.scene()->setTechnique(nullptr);
-  scene.sync();
-  vtkRenderPass* previous = renderer->GetPass();
-  if (previous) previous->Register(nullptr);
-  renderer->SetPass(pass);
-  try {
-    f();
-  } catch (...) {
-    renderer->SetPass(previous);
-    if (previous) previous->UnRegister(nullptr);
-    scene.scene()->setTechnique(technique);
-    throw;
+// While alive: the scene's technique is off and the renderer draws through `pass`; both are
+// restored on scope exit, exceptions included.
+class PassOverride {
+ public:
+  PassOverride(SceneRenderer& scene, vtkRenderer* renderer, vtkRenderPass* pass)
+      : scene_(scene), renderer_(renderer), technique_(scene.scene()->technique()) {
+    scene_.scene()->setTechnique(nullptr);
+    scene_.sync();                     // detaches the technique, which puts back its own previous pass
+    previous_ = renderer_->GetPass();  // so this is the pass from before any technique
+    renderer_->SetPass(pass);
   }
-  renderer->SetPass(previous);
-  if (previous) previous->UnRegister(nullptr);
-  scene.scene()->setTechnique(technique);
-  scene.sync();
-}
+  ~PassOverride() {
+    renderer_->SetPass(previous_);
+    scene_.scene()->setTechnique(technique_);
+  }
+  PassOverride(const PassOverride&) = delete;
+  PassOverride& operator=(const PassOverride&) = delete;
+
+ private:
+  SceneRenderer& scene_;
+  vtkRenderer* renderer_;
+  std::shared_ptr<AOTechnique> technique_;
+  vtkSmartPointer<vtkRenderPass> previous_;
+};
 
 }  // namespace
 
@@ -48,12 +52,14 @@ SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene) {
   vtkRenderer* renderer = window.renderer();
   const ShadingMode mode = scene.shadingMode();
   scene.setShadingMode(ShadingMode::Lit);  // lighting on: VTK then provides vertexVC and normals
-  withPass(scene, renderer, gbuffer, [&] {
+  {
+    PassOverride override(scene, renderer, gbuffer);
     window.render();
     window.makeCurrent();
     if (!gbuffer->ReadBack(posVC, nrmVC)) throw std::runtime_error("G-buffer read-back failed");
-  });
+  }
   scene.setShadingMode(mode);
+  scene.sync();  // the technique is back: let it re-attach
   gbuffer->ReleaseGraphicsResources(window.window());
 
   // VTK's model-view matrix maps world to view coordinates (row-major, column vectors).
