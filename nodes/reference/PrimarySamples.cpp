@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "reference/SurfaceRay.h"
+
 namespace aokit {
 
 SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera, int width, int height) {
@@ -23,21 +25,7 @@ SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera
       const double sx = (2.0 * (x + 0.5) / width - 1.0) * tanHalf * aspect;
       const double sy = (2.0 * (y + 0.5) / height - 1.0) * tanHalf;
       const glm::vec3 dir(glm::normalize(forward + sx * right + sy * up));
-      RTCRayHit rh;
-      rh.ray.org_x = static_cast<float>(camera.position.x);
-      rh.ray.org_y = static_cast<float>(camera.position.y);
-      rh.ray.org_z = static_cast<float>(camera.position.z);
-      rh.ray.dir_x = dir.x;
-      rh.ray.dir_y = dir.y;
-      rh.ray.dir_z = dir.z;
-      rh.ray.tnear = 0.0f;
-      rh.ray.tfar = std::numeric_limits<float>::infinity();
-      rh.ray.time = 0.0f;
-      rh.ray.mask = ~0u;
-      rh.ray.id = 0;
-      rh.ray.flags = 0;
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      RTCRayHit rh = makeRayHit(glm::vec3(camera.position), dir, 0.0f, std::numeric_limits<float>::infinity());
       rtcIntersect1(scene.scene(), &ctx, &rh);
       if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
 

@@ -43,22 +43,7 @@ SurfaceRay makeSurfaceRay(const EmbreeScene& scene, const glm::vec3& p, const gl
   // Probe: from a little above p straight down along -n; the first facet met is p's own.
   // Short, so that a second surface close in front of p is not met first.
   const float reach = 4.0f * offset;
-  RTCRayHit probe;
-  const glm::vec3 start = p + reach * r.normal;
-  probe.ray.org_x = start.x;
-  probe.ray.org_y = start.y;
-  probe.ray.org_z = start.z;
-  probe.ray.dir_x = -r.normal.x;
-  probe.ray.dir_y = -r.normal.y;
-  probe.ray.dir_z = -r.normal.z;
-  probe.ray.tnear = 0.0f;
-  probe.ray.tfar = 2.0f * reach;
-  probe.ray.time = 0.0f;
-  probe.ray.mask = ~0u;
-  probe.ray.id = 0;
-  probe.ray.flags = 0;
-  probe.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  probe.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit probe = makeRayHit(p + reach * r.normal, -r.normal, 0.0f, 2.0f * reach);
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   rtcIntersect1(scene.scene(), &ctx, &probe);
@@ -74,6 +59,25 @@ SurfaceRay makeSurfaceRay(const EmbreeScene& scene, const glm::vec3& p, const gl
   }
   r.origin = p + offset * r.geometricNormal;
   return r;
+}
+
+RTCRayHit makeRayHit(const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) {
+  RTCRayHit rh;
+  rh.ray.org_x = o.x;
+  rh.ray.org_y = o.y;
+  rh.ray.org_z = o.z;
+  rh.ray.dir_x = d.x;
+  rh.ray.dir_y = d.y;
+  rh.ray.dir_z = d.z;
+  rh.ray.tnear = tnear;
+  rh.ray.tfar = tfar;
+  rh.ray.time = 0.0f;
+  rh.ray.mask = ~0u;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
 }
 
 }  // namespace aokit

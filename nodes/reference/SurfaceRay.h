@@ -9,6 +9,7 @@
 // surfaces (n == Ng) nothing changes; for convex facets no ray can hit its own surface.
 #include <algorithm>
 
+#include <embree3/rtcore.h>
 #include <glm/glm.hpp>
 
 namespace aokit {
@@ -28,6 +29,9 @@ struct SurfaceRay {
     return d - 2.0f * below * geometricNormal;
   }
 };
+
+// A ray/hit record for rtcIntersect1 from o along d over [tnear, tfar], hit marked invalid.
+RTCRayHit makeRayHit(const glm::vec3& o, const glm::vec3& d, float tnear, float tfar);
 
 // Default origin offset for a point p: 1e-4 of the scene extent (absorbs rasterizer and float
 // round-off in positions, while staying 50x under a 0.02 wall in a scene a few units wide) plus
