@@ -1,4 +1,24 @@
-  // GBufferPass: written after VTK's lighting. Attachment 1: view-space position (w = 1 where
-  // covered), attachment 2: view-space unit shading normal (back faces flipped by VTK).
+  // GBufferPass: written at the end of the fragment shader (@FLAGS@ and @IDS@ become attachment
+  // numbers: VTK declares the outputs it finds as literal gl_FragData[n]). The normal VTK shaded with is turned
+  // by gl_FrontFacing, which follows the winding; the facet's own normal (from the derivatives
+  // of the view-space position) says which side faces the eye. Turning the shading normal to that
+  // side makes back faces, single-sided sheets and meshes with inconsistent winding all report the
+  // normal of the surface the eye sees.
+  vec3 aokitNormal = normalize(normalVCVSOutput);
+  vec3 aokitFacet = cross(dFdx(vertexVC.xyz), dFdy(vertexVC.xyz));
+  vec3 aokitToEye = aokitParallel != 0 ? vec3(0.0, 0.0, 1.0) : -vertexVC.xyz;
+  aokitFacet *= dot(aokitFacet, aokitToEye) < 0.0 ? -1.0 : 1.0;
+  aokitNormal *= dot(aokitNormal, aokitFacet) < 0.0 ? -1.0 : 1.0;
+#if AOKIT_GBUFFER_LEAN
+  // Lean layout: the normal packed as n * 0.5 + 0.5, a = 1 where covered; positions come from depth.
+  gl_FragData[1] = vec4(aokitNormal * 0.5 + 0.5, 1.0);
+#else
   gl_FragData[1] = vec4(vertexVC.xyz, 1.0);
-  gl_FragData[2] = vec4(normalize(normalVCVSOutput) * (gl_FrontFacing ? 1.0 : -1.0), 1.0);
+  gl_FragData[2] = vec4(aokitNormal, 1.0);
+#endif
+  // Every target is written with alpha 1: VTK keeps blending on for opaque geometry, and alpha 1
+  // makes it a plain overwrite.
+  gl_FragData[@FLAGS@] = vec4(aokitFlags, 0.0, 0.0, 1.0);  // 1 covered + 2 receives + 4 casts, / 255
+#if AOKIT_GBUFFER_IDS
+  gl_FragData[@IDS@] = vec4(aokitInstanceId, 0.0, 0.0, 1.0);
+#endif

@@ -8,7 +8,7 @@
 // With OBS_TRANSFER both sums of eq. 9 are filtered first and W = numerator / denominator taken
 // after, so their correlated errors cancel. Output: occlusion 1 - O in .r, or with OBS_TRANSFER
 // 1 - W per colour in .rgb and 1 - O in .a; 0 on background.
-//AOKIT::Obscurance::Defines
+//AOKIT::Defines
 #if OBS_TRANSFER
 #extension GL_ARB_gpu_shader5 : require
 #endif

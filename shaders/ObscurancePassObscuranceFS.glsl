@@ -7,65 +7,39 @@
 // two sums of eq. 9 over n: .rgb = 1 - sum (1 - S_i) a_i / n (denominator per colour), .a = sum
 // S_i / n (numerator). Out 1: the view-space z of the pixel (+1 on background), for the filter and
 // the upsampling. Positions are reconstructed from the depth buffer (lean G-buffer: depth and a
-// packed normal). Branch-free inside the loop: llvmpipe shades 8 fragments at once and pays for
+// packed normal; shaders/DeferredCommon.glsl). Branch-free inside the loop: llvmpipe shades 8 fragments at once and pays for
 // both sides of a divergent branch.
-//AOKIT::Obscurance::Defines
+//AOKIT::Defines
+//AOKIT::DeferredCommon
 in vec2 texCoord;
-uniform sampler2D obsNormal;    // view-space unit normal as n * 0.5 + 0.5, a = 1 where covered
-uniform sampler2D obsDepth;     // window depth (full resolution, guard band included)
-uniform ivec2 obsGuard;         // guard band: G-buffer texels on each side of the screen
-#if OBS_TRANSFER
-uniform sampler2D obsColor;     // albedo stand-in: the colour buffer (seed 003, end of 4.1)
-#endif
 #if OBS_INTERLEAVED
 uniform vec3 obsOffsets[16 * OBS_SAMPLES];  // one set per 4x4 cell, row-major cells
 #else
 uniform vec3 obsOffsets[OBS_SAMPLES];
 #endif
-uniform vec4 obsClipX, obsClipY, obsClipW;  // rows 0, 1 and 3 of the view -> clip matrix (of the
-                                            // G-buffer's frustum: guard band included)
-uniform vec4 obsDepthToZ;  // (A, B, C, D): view z = (B - ndc D) / (ndc C - A)
 uniform float obsRadius;   // R, world units
 uniform float obsBias;     // world units
 uniform float obsThickness;  // world units: silhouette-elimination window (R in the seed)
 //VTK::Output::Dec
 
-float obsViewZ(float depth)
-{
-  float ndc = 2.0 * depth - 1.0;
-  return (obsDepthToZ.y - ndc * obsDepthToZ.w) / (ndc * obsDepthToZ.z - obsDepthToZ.x);
-}
-
-// The view-space point at view depth z seen through NDC (x, y): the projection inverted for a
-// VTK camera (no skew; perspective or parallel, off-axis terms included).
-vec3 obsUnproject(vec2 ndc, float z)
-{
-  float w = obsClipW.z * z + obsClipW.w;
-  return vec3((ndc.x * w - obsClipX.z * z - obsClipX.w) / obsClipX.x,
-              (ndc.y * w - obsClipY.z * z - obsClipY.w) / obsClipY.y, z);
-}
-
-// The surface stored at full-resolution texel t: view-space point and packed normal (n.w = 0 on
-// background).
-vec3 obsSurface(ivec2 t, vec2 invSize, out vec4 n)
-{
-  n = texelFetch(obsNormal, t, 0);
-  return obsUnproject((vec2(t) + 0.5) * invSize * 2.0 - 1.0, obsViewZ(texelFetch(obsDepth, t, 0).r));
-}
-
 // 1 when view-space point p is inside (behind the surface stored at its pixel by more than the
 // bias), else 0; uv: its texture coordinates. Points outside the G-buffer (screen plus guard band)
-// and background pixels are open: a screen-space method cannot see what it did not draw. With OBS_SILHOUETTE a surface more than
-// obsThickness in front of p is a foreground object, not an occluder (seed 003, 4.3: R > z - z* > 0).
+// and background pixels are open: a screen-space method cannot see what it did not draw. With
+// OBS_SILHOUETTE a surface more than obsThickness in front of p is a foreground object, not an
+// occluder (seed 003, 4.3: R > z - z* > 0). With OBS_NONCASTERS, surfaces of props that cast no AO
+// are open too (what lies behind them is unknown: screen space sees only the front layer).
 // (A test against the tangent plane of the surface at p's pixel was tried and measured worse:
 // points under thin slabs and beside convex objects lie behind those planes.)
 float obsInside(vec3 p, out vec2 uv)
 {
   vec4 h = vec4(p, 1.0);
-  float w = dot(obsClipW, h);
-  uv = vec2(dot(obsClipX, h), dot(obsClipY, h)) / w * 0.5 + 0.5;
+  float w = dot(aoClipW, h);
+  uv = vec2(dot(aoClipX, h), dot(aoClipY, h)) / w * 0.5 + 0.5;
   bool onScreen = w > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0)));
-  float dz = obsViewZ(textureLod(obsDepth, uv, 0.0).r) - p.z;
+  float dz = aoViewZ(textureLod(aoDepth, uv, 0.0).r) - p.z;
+#if OBS_NONCASTERS
+  onScreen = onScreen && (int(textureLod(aoFlagsTex, uv, 0.0).r * 255.0 + 0.5) & AO_FLAG_CASTS) != 0;
+#endif
 #if OBS_SILHOUETTE
   return (onScreen && dz > obsBias && dz < obsThickness) ? 1.0 : 0.0;
 #else
@@ -75,14 +49,10 @@ float obsInside(vec3 p, out vec2 uv)
 
 void main()
 {
-  ivec2 size = textureSize(obsDepth, 0);
-  vec2 invSize = 1.0 / vec2(size);
-  ivec2 screen = size - 2 * obsGuard;
-  ivec2 cell = ivec2(texCoord * vec2((screen + OBS_DOWNSAMPLE - 1) / OBS_DOWNSAMPLE));  // target texel
-  // The G-buffer texel of the full-resolution screen pixel it stands for.
-  ivec2 centre = min(cell * OBS_DOWNSAMPLE, screen - 1) + obsGuard;
-  vec4 N;
-  vec3 x = obsSurface(centre, invSize, N);
+  ivec2 cell = ivec2(texCoord * vec2((aoScreen + OBS_DOWNSAMPLE - 1) / OBS_DOWNSAMPLE));  // target texel
+  ivec2 centre = aoCellTexel(cell, OBS_DOWNSAMPLE);  // the G-buffer texel of the pixel it stands for
+  vec4 N = aoPackedNormal(centre);
+  vec3 x = aoViewPosition(centre);
   if (N.w < 0.5)  // background: divergent only along silhouettes
   {
     gl_FragData[0] = OBS_TRANSFER != 0 ? vec4(1.0) : vec4(0.0);
@@ -117,7 +87,7 @@ void main()
     }
     closed += inside;
 #if OBS_TRANSFER
-    closedAlbedo += inside * textureLod(obsColor, uv, 0.0).rgb;
+    closedAlbedo += inside * textureLod(aoColor, uv, 0.0).rgb;
 #endif
   }
   const float n = float(OBS_SAMPLES);

@@ -17,7 +17,7 @@
 #include "render/OffscreenWindow.h"
 #include "screen/InterleavePattern.h"
 #include "screen/ObscuranceFilter.h"
-#include "screen/ScreenQuadStage.h"
+#include "render/FullScreenStage.h"
 
 using namespace aokit;
 
@@ -179,14 +179,14 @@ TEST(ObscuranceFilter, ResolvesTheAmbientTransferRatioAfterFiltering) {
   }
 }
 
-TEST(ScreenQuadStage, RebuildsOnlyWhenDefinesChangeAndReportsCompileFailures) {
+TEST(FullScreenStage, RebuildsOnlyWhenDefinesChangeAndReportsCompileFailures) {
   OffscreenWindow window(16, 16);
   window.render();
   window.makeCurrent();
   const char* fs =
-      "//VTK::System::Dec\n//AOKIT::Obscurance::Defines\nin vec2 texCoord;\n//VTK::Output::Dec\n"
+      "//VTK::System::Dec\n//AOKIT::Defines\nin vec2 texCoord;\n//VTK::Output::Dec\n"
       "void main() { gl_FragData[0] = vec4(VALUE, texCoord, 1.0); }\n";
-  ScreenQuadStage stage("test", fs);
+  FullScreenStage stage("test", fs);
   vtkShaderProgram* a = stage.ready(window.window(), "#define VALUE 0.5\n");
   ASSERT_NE(a, nullptr);
   EXPECT_EQ(stage.ready(window.window(), "#define VALUE 0.5\n"), a) << "same defines: same program";

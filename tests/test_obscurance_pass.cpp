@@ -342,8 +342,8 @@ TEST(ObscurancePass, HalfResolutionHoldsLessMemory) {
   SceneRig rig("sphere-plane");
   auto half = obscurance("scale=0.5"), full = obscurance("scale=1");
   rig.ao(half);
-  // Lean G-buffer: colour RGBA8 + depth 32F + packed normal RGB10_A2, no position target.
-  const std::size_t gbuffer = static_cast<std::size_t>(kW) * kH * 12;
+  // Lean G-buffer: colour RGBA8 + depth 32F + packed normal RGB10_A2 + flags R8, no positions.
+  const std::size_t gbuffer = static_cast<std::size_t>(kW) * kH * 13;
   rig.scene.root->setTechnique(half);
   rig.renderer.sync();
   rig.window.render();
@@ -366,7 +366,7 @@ TEST(ObscurancePass, LeanGBufferDropsPositionsAndSwitchesBack) {
   for (bool lean : {true, false}) {
     gbuffer->SetLean(lean);
     rig.window.render();
-    EXPECT_EQ(gbuffer->MemoryBytes(), static_cast<std::size_t>(kW) * kH * (lean ? 12 : 40));
+    EXPECT_EQ(gbuffer->MemoryBytes(), static_cast<std::size_t>(kW) * kH * (lean ? 13 : 41));
     EXPECT_EQ(gbuffer->GetPositionTexture() == nullptr, lean);
     EXPECT_EQ(gbuffer->ReadBack(pos, nrm), !lean);
   }

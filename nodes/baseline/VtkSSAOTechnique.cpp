@@ -3,10 +3,12 @@
 #include <stdexcept>
 
 #include <vtkRenderStepsPass.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSSAOPass.h>
 
 #include "core/AOScene.h"
+#include "render/TimedPass.h"
 
 namespace aokit {
 
@@ -24,9 +26,20 @@ void VtkSSAOTechnique::attach(vtkRenderer* renderer, AOScene& scene) {
   pass_->SetDelegatePass(steps);
   pass_->SetKernelSize(settings_.kernelSize);
   pass_->SetBlur(settings_.blur);
+  timed_ = vtkSmartPointer<TimedPass>::New();
+  timed_->SetDelegatePass(pass_);
+  timed_->SetStageName("vtkssao");
+  timed_->SetStageTiming(timing_);
   update(renderer, scene);
-  renderer->SetPass(pass_);
+  renderer->SetPass(timed_);
 }
+
+void VtkSSAOTechnique::setStageTiming(bool on) {
+  timing_ = on;
+  if (timed_) timed_->SetStageTiming(on);
+}
+
+StageTimes VtkSSAOTechnique::stageTimes() { return timed_ ? timed_->GetStageTimes() : StageTimes{}; }
 
 void VtkSSAOTechnique::update(vtkRenderer* renderer, AOScene& scene) {
   const double r = settings_.radius > 0.0 ? settings_.radius : scene.aoRadius();
@@ -37,8 +50,10 @@ void VtkSSAOTechnique::update(vtkRenderer* renderer, AOScene& scene) {
 }
 
 void VtkSSAOTechnique::detach(vtkRenderer* renderer) {
+  if (timed_ && renderer->GetRenderWindow()) timed_->ReleaseGraphicsResources(renderer->GetRenderWindow());
   renderer->SetPass(previous_);
   pass_ = nullptr;
+  timed_ = nullptr;
   previous_ = nullptr;
 }
 

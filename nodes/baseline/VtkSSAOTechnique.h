@@ -10,6 +10,8 @@ class vtkSSAOPass;
 
 namespace aokit {
 
+class TimedPass;
+
 struct VtkSSAOSettings {
   unsigned kernelSize = 32;  //!< samples per pixel, 1..1000 (VTK's default 32)
   double radius = 0.0;       //!< world units; 0 = the scene's AO radius R
@@ -25,13 +27,17 @@ class VtkSSAOTechnique : public AOTechnique {
   void detach(vtkRenderer* renderer) override;
   void update(vtkRenderer* renderer, AOScene& scene) override;
   std::size_t memoryBytes() const override;
+  void setStageTiming(bool on) override;
+  StageTimes stageTimes() override;
 
   const VtkSSAOSettings& settings() const { return settings_; }
 
  private:
   VtkSSAOSettings settings_;
   vtkSmartPointer<vtkSSAOPass> pass_;
+  vtkSmartPointer<TimedPass> timed_;  // pass_ inside one GPU-timed stage
   vtkSmartPointer<vtkRenderPass> previous_;
+  bool timing_ = false;
   int width_ = 0, height_ = 0;
 };
 

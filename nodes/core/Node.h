@@ -18,8 +18,12 @@ enum NodeMask : std::uint32_t {
 
 class Node {
  public:
+  Node();
   virtual ~Node() = default;
   virtual void accept(NodeVisitor& visitor);
+
+  // Unique for the life of the process (never reused): the basis of stable instance ids.
+  std::uint64_t id() const { return id_; }
 
   const std::string& name() const { return name_; }
   void setName(std::string name) { name_ = std::move(name); }
@@ -29,16 +33,19 @@ class Node {
   bool castsAO() const { return mask_ & kCastsAO; }
   bool receivesAO() const { return mask_ & kReceivesAO; }
 
-  // Bumped on every change that a renderer must pick up; lets updates skip untouched nodes.
+  // Set from one process-wide counter on every change that a renderer must pick up, so it only
+  // grows, and the largest revision under a root is a change counter for the whole scene
+  // (sceneRevision() in core/Scene.h). Lets updates skip untouched nodes.
   std::uint64_t revision() const { return revision_; }
 
  protected:
-  void touch() { ++revision_; }
+  void touch();
 
  private:
   std::string name_;
   std::uint32_t mask_ = kDefaultMask;
-  std::uint64_t revision_ = 0;
+  std::uint64_t id_;
+  std::uint64_t revision_;
 };
 
 using NodePtr = std::shared_ptr<Node>;

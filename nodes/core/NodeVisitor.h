@@ -27,6 +27,10 @@ struct GeometryInstance {
   Geometry* geometry = nullptr;
   glm::dmat4 world{1.0};
   std::uint32_t mask = 0;  // effective mask: AND of masks along the path
+  // Stable id of this placement (the path of nodes from the root), >= 1: the same path gets the
+  // same id for the life of the process, whatever moves; a mesh shown twice gets two ids. Passes
+  // write it into the G-buffer (an occluder skips its own field there).
+  std::uint32_t id = 0;
 };
 
 // Collects every Geometry under root with its accumulated world matrix. Skips subtrees whose

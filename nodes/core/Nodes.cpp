@@ -1,6 +1,9 @@
 // accept() of every node type and the default visitor walk.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
 #include "core/AOScene.h"
@@ -9,6 +12,29 @@
 #include "core/Transform.h"
 
 namespace aokit {
+
+namespace {
+std::atomic<std::uint64_t> nextNodeId{1};
+std::atomic<std::uint64_t> revisionClock{1};
+
+// Instance ids: one small integer per path of node ids, handed out on first sight. Hashing the
+// path (FNV-1a over 64-bit ids) keeps the key small; 64-bit collisions are not a practical risk.
+std::uint32_t instanceIdForPath(std::uint64_t pathHash) {
+  static std::mutex mutex;
+  static std::map<std::uint64_t, std::uint32_t> ids;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto [it, added] = ids.emplace(pathHash, static_cast<std::uint32_t>(ids.size() + 1));
+  return it->second;
+}
+
+std::uint64_t hashStep(std::uint64_t h, std::uint64_t v) {
+  for (int b = 0; b < 8; ++b) h = (h ^ ((v >> (8 * b)) & 0xffu)) * 1099511628211ull;
+  return h;
+}
+}  // namespace
+
+Node::Node() : id_(nextNodeId++), revision_(revisionClock++) {}
+void Node::touch() { revision_ = revisionClock++; }
 
 void Node::accept(NodeVisitor& v) { v.apply(*this); }
 void Group::accept(NodeVisitor& v) { v.apply(*this); }
@@ -65,19 +91,23 @@ class InstanceCollector : public NodeVisitor {
     });
   }
   void apply(Geometry& g) override {
-    descend(g, [&] { out.push_back({&g, world_, mask_}); });
+    descend(g, [&] { out.push_back({&g, world_, mask_, instanceIdForPath(path_)}); });
   }
 
  private:
   template <class F>
   void descend(Node& n, F&& f) {
-    const std::uint32_t saved = mask_;
+    const std::uint32_t savedMask = mask_;
+    const std::uint64_t savedPath = path_;
     mask_ &= n.mask();
+    path_ = hashStep(path_, n.id());
     if (mask_ & require_) f();
-    mask_ = saved;
+    mask_ = savedMask;
+    path_ = savedPath;
   }
   std::uint32_t require_;
   std::uint32_t mask_ = ~0u;
+  std::uint64_t path_ = 14695981039346656037ull;  // FNV-1a offset basis
   glm::dmat4 world_{1.0};
 };
 

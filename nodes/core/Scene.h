@@ -21,4 +21,9 @@ struct Scene {
 // Bounds of everything under the root, in world space.
 Bounds worldBounds(Node& root);
 
+// A change counter for everything under root: the largest node revision there. It grows on every
+// change (a moved transform, a new mesh, an added or removed child, a mask or material edit), so
+// a technique that keeps derived data (a bake, a voxel region) compares it with the last value.
+std::uint64_t sceneRevision(Node& root);
+
 }  // namespace aokit

@@ -24,7 +24,7 @@
 
 #include "GBufferCopyFS.h"
 #include "GBufferOutputFS.h"
-#include "GBufferOutputLeanFS.h"
+#include "render/ActorKeys.h"
 
 namespace aokit {
 
@@ -39,16 +39,26 @@ void GBufferPass::SetDelegatePass(vtkRenderPass* delegate) {
   Modified();
 }
 
-void GBufferPass::SetLean(bool on) {
-  if (on == Lean) return;
-  Lean = on;
-  // The targets and the mappers' shaders change: drop the targets, and Modified() makes VTK
-  // rebuild the shaders (it keys them on this pass's MTime).
-  ColorTexture = PositionTexture = NormalTexture = DepthTexture = nullptr;
+void GBufferPass::DropTargets() {
+  // The targets and the mappers' shaders change: drop the targets, and LayoutTime makes VTK
+  // rebuild the shaders (GetShaderStageMTime).
+  ColorTexture = PositionTexture = NormalTexture = DepthTexture = FlagsTexture = InstanceIdTexture = nullptr;
   Framebuffer = nullptr;
   Width = Height = 0;
   LayoutTime.Modified();
   Modified();
+}
+
+void GBufferPass::SetLean(bool on) {
+  if (on == Lean) return;
+  Lean = on;
+  DropTargets();
+}
+
+void GBufferPass::SetInstanceIds(bool on) {
+  if (on == InstanceIds) return;
+  InstanceIds = on;
+  DropTargets();
 }
 
 void GBufferPass::SetGuardBand(double fraction) {
@@ -111,6 +121,8 @@ void GBufferPass::Allocate(vtkOpenGLRenderWindow* renWin, int w, int h) {
       PositionTexture = makeTarget(renWin, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, w, h);
       NormalTexture = makeTarget(renWin, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, w, h);
     }
+    FlagsTexture = makeTarget(renWin, GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, VTK_UNSIGNED_CHAR, w, h);
+    if (InstanceIds) InstanceIdTexture = makeTarget(renWin, GL_R32F, GL_RED, GL_FLOAT, 1, VTK_FLOAT, w, h);
     DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
     DepthTexture->SetContext(renWin);
     DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -122,6 +134,8 @@ void GBufferPass::Allocate(vtkOpenGLRenderWindow* renWin, int w, int h) {
     ColorTexture->Resize(w, h);
     if (PositionTexture) PositionTexture->Resize(w, h);
     NormalTexture->Resize(w, h);
+    FlagsTexture->Resize(w, h);
+    if (InstanceIdTexture) InstanceIdTexture->Resize(w, h);
     DepthTexture->Resize(w, h);
   }
   Width = w;
@@ -151,6 +165,7 @@ void GBufferPass::Render(const vtkRenderState* s) {
   // with a guard band, x and y shrink so that the viewport's frustum fills the centre w x h texels:
   // window x' = (ndc sx + 1) W / 2 = (ndc + 1) w / 2 + GuardX.
   vtkCamera* camera = r->GetActiveCamera();
+  Parallel = camera->GetParallelProjection() != 0;
   Projection->DeepCopy(camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1, 1));
   const bool guarded = GuardX > 0 || GuardY > 0;
   const double scale[2] = {static_cast<double>(w) / W, static_cast<double>(h) / H};
@@ -188,6 +203,8 @@ void GBufferPass::Render(const vtkRenderState* s) {
     Framebuffer->AddColorAttachment(1, PositionTexture);
     Framebuffer->AddColorAttachment(2, NormalTexture);
   }
+  Framebuffer->AddColorAttachment(FlagsAttachment(), FlagsTexture);
+  if (InstanceIds) Framebuffer->AddColorAttachment(Attachments() - 1, InstanceIdTexture);
   Framebuffer->AddDepthAttachment(DepthTexture);
   Framebuffer->ActivateDrawBuffers(Attachments());
   Framebuffer->StartNonOrtho(W, H);
@@ -195,6 +212,10 @@ void GBufferPass::Render(const vtkRenderState* s) {
   // Background must read as "not covered" in the position/normal targets whatever VTK clears to.
   const float zero[4] = {0, 0, 0, 0};
   for (int i = 1; i < Attachments(); ++i) glClearBufferfv(GL_COLOR, i, zero);
+  // Only the colour target takes the renderer's background clear (a background alpha of 1 must not
+  // mark every pixel covered); polydata mappers switch all targets on for their own draws
+  // (SetShaderParameters).
+  ActivateDrawBuffers(1);
   Delegate->Render(rs);
   NumberOfRenderedProps += Delegate->GetNumberOfRenderedProps();
   Framebuffer->UnBind();
@@ -240,31 +261,57 @@ void GBufferPass::CopyToFramebuffer(vtkOpenGLRenderWindow* renWin) {
 
 bool GBufferPass::PreReplaceShaderValues(std::string&, std::string&, std::string& fs, vtkAbstractMapper* mapper,
                                          vtkProp*) {
-  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
-    vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//VTK::Light::Impl\n  //AOKIT::GBuffer::Impl\n", false);
+  // Markers the mapper leaves alone: our declarations beside the outputs, our code last in main
+  // (after texturing, which may rewrite the colour's alpha).
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper)) {
+    vtkShaderProgram::Substitute(fs, "//VTK::Output::Dec", "//VTK::Output::Dec\n//AOKIT::GBuffer::Dec\n", false);
+    vtkShaderProgram::Substitute(fs, "//VTK::Picking::Impl", "//VTK::Picking::Impl\n  //AOKIT::GBuffer::Impl\n", false);
+  }
   return true;
 }
 
 bool GBufferPass::PostReplaceShaderValues(std::string&, std::string&, std::string& fs, vtkAbstractMapper* mapper,
                                           vtkProp*) {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper)) return true;
+  vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Dec",
+                               "uniform float aokitFlags;\nuniform float aokitInstanceId;\nuniform int aokitParallel;\n",
+                               false);
+  std::string impl;
   if (fs.find("vertexVC") != std::string::npos && fs.find("normalVCVSOutput") != std::string::npos) {
-    vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Impl", Lean ? GBufferOutputLeanFS : GBufferOutputFS, false);
+    std::string code = GBufferOutputFS;
+    vtkShaderProgram::Substitute(code, "@FLAGS@", std::to_string(FlagsAttachment()), true);
+    vtkShaderProgram::Substitute(code, "@IDS@", std::to_string(Attachments() - 1), true);
+    impl = std::string("#define AOKIT_GBUFFER_LEAN ") + (Lean ? "1" : "0") + "\n#define AOKIT_GBUFFER_IDS " +
+           (InstanceIds ? "1" : "0") + "\n" + code;
   } else {
     // Without the varyings (no lighting, no normals) the surface cannot be described: leave it
     // out of the G-buffer rather than write garbage.
-    vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Impl",
-                                 Lean ? "gl_FragData[1] = vec4(0.0);\n"
-                                      : "gl_FragData[1] = vec4(0.0);\n  gl_FragData[2] = vec4(0.0);\n",
-                                 false);
+    for (int i = 1; i < Attachments(); ++i) impl += "gl_FragData[" + std::to_string(i) + "] = vec4(0.0);\n";
+  }
+  vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Impl", impl, false);
+  return true;
+}
+
+bool GBufferPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+                                      vtkOpenGLVertexArrayObject*) {
+  const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
+  ActivateDrawBuffers(polyData ? Attachments() : 1);
+  if (polyData && program->IsUniformUsed("aokitFlags")) {
+    const int flags = 1 + (propReceivesAO(prop) ? 2 : 0) + (propCastsAO(prop) ? 4 : 0);
+    program->SetUniformf("aokitFlags", flags / 255.0f);
+    program->SetUniformf("aokitInstanceId", static_cast<float>(propInstanceId(prop)));
+    program->SetUniformi("aokitParallel", Parallel ? 1 : 0);
   }
   return true;
 }
 
-bool GBufferPass::SetShaderParameters(vtkShaderProgram*, vtkAbstractMapper* mapper, vtkProp*,
-                                      vtkOpenGLVertexArrayObject*) {
-  Framebuffer->ActivateDrawBuffers(vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ? Attachments() : 1);
-  return true;
+void GBufferPass::ActivateDrawBuffers(int count) {
+  // vtkOpenGLState caches draw buffers by comparing only the first `count` entries, so going from
+  // three buffers to one (same first entry) would be skipped, and back again too. Setting GL_NONE
+  // first makes each change reach GL.
+  unsigned none = GL_NONE;
+  Framebuffer->GetContext()->GetState()->vtkglDrawBuffers(1, &none);
+  Framebuffer->ActivateDrawBuffers(count);
 }
 
 bool GBufferPass::ReadBack(std::vector<float>& positionsVC, std::vector<float>& normalsVC) {
@@ -284,9 +331,23 @@ bool GBufferPass::ReadBack(std::vector<float>& positionsVC, std::vector<float>& 
   return true;
 }
 
+bool GBufferPass::ReadFlags(std::vector<std::uint8_t>& flags) {
+  if (!Framebuffer || Width == 0) return false;
+  flags.resize(static_cast<std::size_t>(Width) * Height);
+  Framebuffer->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+  Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + FlagsAttachment());
+  glReadPixels(0, 0, Width, Height, GL_RED, GL_UNSIGNED_BYTE, flags.data());
+  Framebuffer->UnBind(GL_READ_FRAMEBUFFER);
+  Framebuffer->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+  return true;
+}
+
 std::size_t GBufferPass::MemoryBytes() const {
-  // Colour RGBA8 and depth 32F, then position + normal (2 x RGBA32F) or the packed normal.
-  return static_cast<std::size_t>(Width) * Height * (4 + 4 + (Lean ? 4 : 16 + 16));
+  // Colour RGBA8, depth 32F and flags R8, then position + normal (2 x RGBA32F) or the packed
+  // normal, and ids.
+  return static_cast<std::size_t>(Width) * Height * (4 + 4 + 1 + (Lean ? 4 : 16 + 16) + (InstanceIds ? 4 : 0));
 }
 
 void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {
@@ -294,7 +355,7 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {
   if (Delegate) Delegate->ReleaseGraphicsResources(w);
   delete CopyQuad;
   CopyQuad = nullptr;
-  ColorTexture = PositionTexture = NormalTexture = DepthTexture = nullptr;
+  ColorTexture = PositionTexture = NormalTexture = DepthTexture = FlagsTexture = InstanceIdTexture = nullptr;
   Framebuffer = nullptr;
   Width = Height = GuardX = GuardY = 0;
 }

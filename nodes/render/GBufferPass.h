@@ -1,16 +1,20 @@
 #pragma once
-// GBufferPass renders its delegate (by default vtkRenderStepsPass) into an FBO with four targets:
+// GBufferPass renders its delegate (by default vtkRenderStepsPass) into an FBO with five targets:
 //   colour   RGBA8     the lit frame,
 //   position RGBA32F   view-space position, w = 1 where a surface was drawn (0 = background),
-//   normal   RGBA32F   view-space unit shading normal, facing the viewer,
-//   depth    32F       window depth.
+//   normal   RGBA32F   view-space unit shading normal of the side the eye sees (back faces,
+//                      single-sided sheets and inconsistent winding included),
+//   flags    R8        the prop's AO flags: (1 covered + 2 receives + 4 casts) / 255 (ActorKeys.h),
+//   depth    32F       window depth,
+// plus, with SetInstanceIds(true), an R32F target holding each pixel's instance id (ActorKeys.h;
+// exact up to 2^24, 0 for untagged props and background).
 // Then it copies colour and depth to the framebuffer it was called with, so it can stand alone
 // in a pipeline. AO passes read its textures; the reference reads them back to the CPU.
 // Positions are 32-bit floats (vtkSSAOPass uses 16-bit): the reference needs them exact.
 //
 // Lean mode (SetLean(true), for AO passes that reconstruct positions from depth): no position
-// target, and the normal packed as n * 0.5 + 0.5 in RGB10_A2 (a = 1 where covered). 12 bytes a
-// pixel instead of 40: on a CPU rasterizer the G-buffer's write bandwidth is most of its cost.
+// target, and the normal packed as n * 0.5 + 0.5 in RGB10_A2 (a = 1 where covered). 13 bytes a
+// pixel instead of 41: on a CPU rasterizer the G-buffer's write bandwidth is most of its cost.
 // ReadBack needs the full layout and returns false in lean mode.
 //
 // Guard band (SetGuardBand(g), default 0): the scene is drawn for an enlarged frustum, the same
@@ -19,6 +23,7 @@
 // (i + GetGuardX(), j + GetGuardY()) of every target; GetProjection() is the view -> clip matrix the
 // mappers used. Props the renderer culled are drawn too (they may lie in the band); 2D overlay
 // actors would land off their place in the colour target.
+#include <cstdint>
 #include <vector>
 
 #include <vtkMatrix4x4.h>
@@ -46,12 +51,18 @@ class GBufferPass : public vtkOpenGLRenderPass {
   // Lean layout (see above); takes effect at the next Render (targets are rebuilt).
   void SetLean(bool on);
   bool GetLean() const { return Lean; }
+  // Instance-id target (see above); takes effect at the next Render (targets are rebuilt).
+  void SetInstanceIds(bool on);
+  bool GetInstanceIds() const { return InstanceIds; }
   // Guard band as a fraction of the viewport size added on each side, 0..1; next Render.
   void SetGuardBand(double fraction);
   double GetGuardBand() const { return Guard; }
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
+  // Copies the last frame's colour and depth into the current framebuffer's viewport (what
+  // SetCopyToOutput does after Render; for callers whose own stages failed).
+  void CopyToFramebuffer(vtkOpenGLRenderWindow* renWin);
 
   bool PreReplaceShaderValues(std::string& vs, std::string& gs, std::string& fs, vtkAbstractMapper* mapper,
                               vtkProp* prop) override;
@@ -66,6 +77,8 @@ class GBufferPass : public vtkOpenGLRenderPass {
   vtkTextureObject* GetPositionTexture() const { return PositionTexture; }  // null when lean
   vtkTextureObject* GetNormalTexture() const { return NormalTexture; }      // packed when lean
   vtkTextureObject* GetDepthTexture() const { return DepthTexture; }
+  vtkTextureObject* GetFlagsTexture() const { return FlagsTexture; }
+  vtkTextureObject* GetInstanceIdTexture() const { return InstanceIdTexture; }  // null unless enabled
   vtkOpenGLFramebufferObject* GetFramebuffer() const { return Framebuffer; }
   int GetWidth() const { return Width; }    // of the targets: the viewport plus the guard band
   int GetHeight() const { return Height; }
@@ -79,6 +92,9 @@ class GBufferPass : public vtkOpenGLRenderPass {
   // Reads attachment 1 (positions) and 2 (normals) of the last frame: 4 floats a pixel, bottom
   // row first, whole targets (guard band included). The context must be current. Returns false before the first Render.
   bool ReadBack(std::vector<float>& positionsVC, std::vector<float>& normalsVC);
+  // Reads the AO flags (see above) of the last frame, whole targets, bottom row first; 0 on
+  // background. Returns false before the first Render.
+  bool ReadFlags(std::vector<std::uint8_t>& flags);
   // GPU bytes held by the targets.
   std::size_t MemoryBytes() const;
 
@@ -87,16 +103,21 @@ class GBufferPass : public vtkOpenGLRenderPass {
   ~GBufferPass() override;
 
  private:
-  int Attachments() const { return Lean ? 2 : 3; }  // colour, (position,) normal
+  // colour, (position,) normal, flags, (ids)
+  int FlagsAttachment() const { return Lean ? 2 : 3; }
+  int Attachments() const { return FlagsAttachment() + 1 + (InstanceIds ? 1 : 0); }
+  void DropTargets();
+  void ActivateDrawBuffers(int count);
   void Allocate(vtkOpenGLRenderWindow* renWin, int w, int h);
-  void CopyToFramebuffer(vtkOpenGLRenderWindow* renWin);
 
   vtkSmartPointer<vtkRenderPass> Delegate;
-  vtkSmartPointer<vtkTextureObject> ColorTexture, PositionTexture, NormalTexture, DepthTexture;
+  vtkSmartPointer<vtkTextureObject> ColorTexture, PositionTexture, NormalTexture, DepthTexture, FlagsTexture, InstanceIdTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkOpenGLQuadHelper* CopyQuad = nullptr;
   bool CopyToOutput = true;
   bool Lean = false;
+  bool InstanceIds = false;
+  bool Parallel = false;  // the camera's projection this frame (which way is "toward the eye")
   vtkTimeStamp LayoutTime;
   int Width = 0, Height = 0;
   double Guard = 0.0;

@@ -24,4 +24,6 @@ void OSMesaContext::makeCurrent() {
     throw std::runtime_error("OSMesaMakeCurrent failed");
 }
 
+bool OSMesaContext::isCurrent() const { return context_ && OSMesaGetCurrentContext() == context_; }
+
 }  // namespace aokit

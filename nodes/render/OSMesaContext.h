@@ -14,6 +14,7 @@ class OSMesaContext {
   OSMesaContext& operator=(const OSMesaContext&) = delete;
 
   void makeCurrent();
+  bool isCurrent() const;
 
  private:
   void* context_ = nullptr;

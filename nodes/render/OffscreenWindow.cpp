@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
@@ -17,6 +19,7 @@ struct OffscreenWindow::Impl {
   OSMesaContext context;
   vtkNew<vtkGenericOpenGLRenderWindow> window;
   vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkCallbackCommand> makeCurrent, isCurrent;
 };
 
 namespace {
@@ -34,6 +37,18 @@ OffscreenWindow::OffscreenWindow(int width, int height)
   makeCurrent();
 
   auto* w = impl_->window.Get();
+  // VTK asks the window to make its context current whenever it touches GL (rendering, releasing
+  // textures): answer with this window's OSMesa context, so several windows can live in one process.
+  impl_->makeCurrent->SetClientData(&impl_->context);
+  impl_->makeCurrent->SetCallback([](vtkObject*, unsigned long, void* context, void*) {
+    static_cast<OSMesaContext*>(context)->makeCurrent();
+  });
+  impl_->isCurrent->SetClientData(&impl_->context);
+  impl_->isCurrent->SetCallback([](vtkObject*, unsigned long, void* context, void* answer) {
+    *static_cast<bool*>(answer) = static_cast<OSMesaContext*>(context)->isCurrent();
+  });
+  w->AddObserver(vtkCommand::WindowMakeCurrentEvent, impl_->makeCurrent);
+  w->AddObserver(vtkCommand::WindowIsCurrentEvent, impl_->isCurrent);
   w->SetOwnContext(0);
   w->SetReadyForRendering(true);
   w->SetIsCurrent(true);

@@ -14,6 +14,7 @@
 
 #include "core/Geometry.h"
 #include "core/NodeVisitor.h"
+#include "render/ActorKeys.h"
 
 namespace aokit {
 
@@ -22,6 +23,7 @@ struct SceneRenderer::ActorEntry {
   std::uint64_t geometryRevision = ~0ull;
   std::uint64_t meshRevision = ~0ull;
   glm::dmat4 world{0.0};
+  std::uint32_t mask = ~0u, instanceId = 0;
   ShadingMode mode = ShadingMode::Lit;
   std::uint64_t seen = 0;
 };
@@ -120,6 +122,11 @@ void SceneRenderer::sync() {
       e.geometryRevision = g.revision();
       e.mode = mode_;
     }
+    if (e.mask != inst.mask || e.instanceId != inst.id) {
+      tagProp(e.actor, inst.mask, inst.id);
+      e.mask = inst.mask;
+      e.instanceId = inst.id;
+    }
     if (e.world != inst.world) {
       vtkNew<vtkMatrix4x4> m;
       for (int r = 0; r < 4; ++r)
@@ -146,7 +153,10 @@ void SceneRenderer::syncTechnique() {
   if (wanted != attached_) {
     if (attached_) attached_->detach(renderer_);
     attached_ = wanted;
-    if (attached_) attached_->attach(renderer_, *root_);
+    if (attached_) {
+      attached_->ensurePrepared(*root_);
+      attached_->attach(renderer_, *root_);
+    }
   }
   if (attached_) attached_->update(renderer_, *root_);
 }

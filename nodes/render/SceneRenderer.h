@@ -1,6 +1,7 @@
 #pragma once
 // Builds and updates a vtkRenderer from a scene graph: one actor per placed Geometry, user
-// matrices from Transforms, materials from albedo, and the AOScene's technique installed.
+// matrices from Transforms, materials from albedo, node masks and instance ids as actor keys
+// (render/ActorKeys.h), and the AOScene's technique installed.
 // Only what changed is touched: moving a Transform rewrites one matrix, not the mesh buffers.
 #include <cstddef>
 #include <cstdint>

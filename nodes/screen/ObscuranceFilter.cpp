@@ -23,7 +23,7 @@ bool ObscuranceFilter::run(vtkOpenGLRenderWindow* renWin, vtkOpenGLFramebufferOb
   p->SetUniformi("obsRaw", raw->GetTextureUnit());
   p->SetUniformi("obsZ", viewZ->GetTextureUnit());
   p->SetUniformf("obsFilterTolerance", c.filterTolerance);
-  stage_.renderInto(fbo, out);
+  stage_.renderInto(fbo, {out});
   viewZ->Deactivate();
   raw->Deactivate();
   return true;

@@ -3,7 +3,7 @@
 // the 4x4 depth-aware box filter over the interleave period (shaders/ObscurancePassFilterFS.glsl),
 // which also resolves W = numerator / denominator in ambient-transfer mode.
 #include "screen/ObscuranceSettings.h"
-#include "screen/ScreenQuadStage.h"
+#include "render/FullScreenStage.h"
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -24,7 +24,7 @@ class ObscuranceFilter {
   void release() { stage_.release(); }
 
  private:
-  ScreenQuadStage stage_;
+  FullScreenStage stage_;
 };
 
 }  // namespace aokit

@@ -16,6 +16,7 @@ void ObscuranceTechnique::attach(vtkRenderer* renderer, AOScene& scene) {
   previous_ = renderer->GetPass();
   pass_ = vtkSmartPointer<ObscurancePass>::New();
   pass_->SetSettings(settings_);
+  pass_->SetStageTiming(timing_);
   update(renderer, scene);
   renderer->SetPass(pass_);
 }
@@ -39,5 +40,16 @@ bool ObscuranceTechnique::readAO(vtkRenderer* renderer, std::vector<float>& ao) 
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   return pass_ && renWin && pass_->ReadAO(renWin, ao);
 }
+
+AOQuantity ObscuranceTechnique::quantity() const {
+  return settings_.ambientTransfer ? AOQuantity::Transfer : AOQuantity::Occlusion;
+}
+
+void ObscuranceTechnique::setStageTiming(bool on) {
+  timing_ = on;
+  if (pass_) pass_->SetStageTiming(on);
+}
+
+StageTimes ObscuranceTechnique::stageTimes() { return pass_ ? pass_->GetStageTimes() : StageTimes{}; }
 
 }  // namespace aokit

@@ -23,6 +23,9 @@ class ObscuranceTechnique : public AOTechnique {
   void update(vtkRenderer* renderer, AOScene& scene) override;
   std::size_t memoryBytes() const override;
   bool readAO(vtkRenderer* renderer, std::vector<float>& ao) override;
+  AOQuantity quantity() const override;
+  void setStageTiming(bool on) override;
+  StageTimes stageTimes() override;
 
   const ObscuranceSettings& settings() const { return settings_; }
   ObscurancePass* pass() const { return pass_; }
@@ -31,6 +34,7 @@ class ObscuranceTechnique : public AOTechnique {
   ObscuranceSettings settings_;
   vtkSmartPointer<ObscurancePass> pass_;
   vtkSmartPointer<vtkRenderPass> previous_;
+  bool timing_ = false;
 };
 
 }  // namespace aokit

@@ -1,4 +1,4 @@
-#include "screen/ScreenQuadStage.h"
+#include "render/FullScreenStage.h"
 
 #include <vtkOpenGLFramebufferObject.h>
 #include <vtkOpenGLQuadHelper.h>
@@ -9,20 +9,23 @@
 #include <vtkShaderProgram.h>
 #include <vtkTextureObject.h>
 
+#include "DeferredCommon.h"
+
 namespace aokit {
 
-ScreenQuadStage::ScreenQuadStage(std::string name, const char* fragmentSource)
+FullScreenStage::FullScreenStage(std::string name, const char* fragmentSource)
     : name_(std::move(name)), source_(fragmentSource) {}
 
-ScreenQuadStage::~ScreenQuadStage() { release(); }
+FullScreenStage::~FullScreenStage() { release(); }
 
-std::string ScreenQuadStage::fragmentSource(const std::string& defines) const {
+std::string FullScreenStage::fragmentSource(const std::string& defines) const {
   std::string fs = source_;
-  vtkShaderProgram::Substitute(fs, "//AOKIT::Obscurance::Defines", defines, false);
+  vtkShaderProgram::Substitute(fs, "//AOKIT::Defines", defines, false);
+  vtkShaderProgram::Substitute(fs, "//AOKIT::DeferredCommon", DeferredCommon, false);
   return fs;
 }
 
-vtkShaderProgram* ScreenQuadStage::ready(vtkOpenGLRenderWindow* renWin, const std::string& defines) {
+vtkShaderProgram* FullScreenStage::ready(vtkOpenGLRenderWindow* renWin, const std::string& defines) {
   if (quad_ && defines == defines_) {
     if (failed_) return nullptr;  // do not retry (and re-log) a known failure every frame
     renWin->GetShaderCache()->ReadyShaderProgram(quad_->Program);
@@ -36,25 +39,25 @@ vtkShaderProgram* ScreenQuadStage::ready(vtkOpenGLRenderWindow* renWin, const st
   return failed_ ? nullptr : quad_->Program;
 }
 
-void ScreenQuadStage::render() {
+void FullScreenStage::render() {
   if (quad_ && !failed_) quad_->Render();
 }
 
-void ScreenQuadStage::renderInto(vtkOpenGLFramebufferObject* fbo, vtkTextureObject* target,
-                                 vtkTextureObject* second) {
+void FullScreenStage::renderInto(vtkOpenGLFramebufferObject* fbo, std::initializer_list<vtkTextureObject*> targets) {
   vtkOpenGLState* state = fbo->GetContext()->GetState();
   state->PushFramebufferBindings();
   fbo->Bind();
-  fbo->AddColorAttachment(0, target);
-  if (second) fbo->AddColorAttachment(1, second);
-  fbo->ActivateDrawBuffers(second ? 2 : 1);
-  fbo->Start(target->GetWidth(), target->GetHeight());  // Start, unlike StartNonOrtho, sets the viewport
+  unsigned i = 0;
+  for (vtkTextureObject* t : targets) fbo->AddColorAttachment(i++, t);
+  fbo->ActivateDrawBuffers(i);
+  vtkTextureObject* first = *targets.begin();
+  fbo->Start(first->GetWidth(), first->GetHeight());  // Start, unlike StartNonOrtho, sets the viewport
   render();
-  fbo->RemoveColorAttachments(second ? 2 : 1);
+  fbo->RemoveColorAttachments(i);
   state->PopFramebufferBindings();
 }
 
-void ScreenQuadStage::release() {
+void FullScreenStage::release() {
   delete quad_;
   quad_ = nullptr;
   failed_ = false;

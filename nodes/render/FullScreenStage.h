@@ -1,7 +1,9 @@
 #pragma once
-// One full-screen fragment program of a post-process pass: an embedded .glsl source whose
-// "//AOKIT::Obscurance::Defines" line receives the shape-changing #defines. The program is
-// rebuilt only when those defines change; uniforms are set on it every frame.
+// One full-screen fragment program of a render pass: an embedded .glsl source whose
+// "//AOKIT::Defines" line receives the shape-changing #defines and whose "//AOKIT::DeferredCommon"
+// line (if any) receives shaders/DeferredCommon.glsl, the G-buffer helpers every deferred AO stage
+// shares. The program is rebuilt only when the defines change; uniforms are set on it every frame.
+#include <initializer_list>
 #include <string>
 
 class vtkOpenGLFramebufferObject;
@@ -12,21 +14,21 @@ class vtkTextureObject;
 
 namespace aokit {
 
-class ScreenQuadStage {
+class FullScreenStage {
  public:
-  ScreenQuadStage(std::string name, const char* fragmentSource);
-  ~ScreenQuadStage();
-  ScreenQuadStage(const ScreenQuadStage&) = delete;
-  ScreenQuadStage& operator=(const ScreenQuadStage&) = delete;
+  FullScreenStage(std::string name, const char* fragmentSource);
+  ~FullScreenStage();
+  FullScreenStage(const FullScreenStage&) = delete;
+  FullScreenStage& operator=(const FullScreenStage&) = delete;
 
   // Builds (when the defines changed) and binds the program. Returns nullptr when it does not
   // compile or link; VTK's shader cache has then printed the log, and the caller reports the stage.
   vtkShaderProgram* ready(vtkOpenGLRenderWindow* renWin, const std::string& defines);
   // Draws the quad with the bound program (after ready()) into the current framebuffer.
   void render();
-  // Draws it into `target` (and `second` as colour attachment 1) through `fbo`, at the target's
+  // Draws it into `targets` (colour attachments 0, 1, ...) through `fbo`, at the first target's
   // size; the previous framebuffer bindings are restored.
-  void renderInto(vtkOpenGLFramebufferObject* fbo, vtkTextureObject* target, vtkTextureObject* second = nullptr);
+  void renderInto(vtkOpenGLFramebufferObject* fbo, std::initializer_list<vtkTextureObject*> targets);
   // Drops the program and vertex arrays (the context is going away or changing).
   void release();
 
