@@ -292,7 +292,7 @@ TEST(ObscuranceSettings, RegistryRejectsBadValuesByName) {
   EXPECT_NE(message("samples=0").find("samples"), std::string::npos);
   EXPECT_NE(message("radius=-2").find("radius"), std::string::npos);
   EXPECT_NE(message("m=5").find("m must be"), std::string::npos);
-  EXPECT_NE(message("scale=0.7").find("resolutionScale"), std::string::npos);
+  EXPECT_NE(message("scale=0.7").find("scale must be 1, 0.5"), std::string::npos);
   EXPECT_NE(message("interleave=spiral").find("interleave"), std::string::npos);
   EXPECT_NE(message("falloff=cubic").find("falloff"), std::string::npos);
   EXPECT_NE(message("view=xray").find("view"), std::string::npos);

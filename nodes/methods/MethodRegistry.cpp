@@ -1,99 +1,105 @@
 #include "methods/MethodRegistry.h"
 
+#include <algorithm>
 #include <cmath>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
-#include "baseline/VtkSSAOTechnique.h"
-#include "reference/Falloff.h"
-#include "screen/ObscuranceTechnique.h"
-
 namespace aokit {
 
-SettingMap parseSettings(const std::string& text) {
-  SettingMap out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    if (item.empty()) continue;
-    const auto eq = item.find('=');
-    if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
-      throw std::invalid_argument("setting '" + item + "' is not key=value");
-    out[item.substr(0, eq)] = item.substr(eq + 1);
-  }
-  return out;
-}
+namespace {
 
-const std::vector<MethodInfo>& methods() {
-  static const std::vector<MethodInfo> all = {
-      {"none", "no AO: the base frame", {""}, {}},
-      {"vtkssao", "VTK's vtkSSAOPass, radius R, bias 0.01 R",
-       {"kernel=16", "kernel=32", "kernel=64", "kernel=128", "kernel=32,blur=1"},
-       {"kernel", "blur", "bias"}},
-      // Screen-space obscurances (seed 003). Keys: samples (rays per pixel, 1..64), m (points per ray,
-      // 1..4), scale (1 full or 0.5 half resolution), radius (world units, 0 = scene R), falloff
-      // (binary|wendland|sqrt|exponential, default the scene's), interleave (shifts|rotations|off),
-      // filter, silhouette, transfer (0|1), bias and thickness (silhouette-elimination window), both
-      // fractions of R, tolerance (filter depth tolerance, fraction of view depth), guard (guard band,
-      // fraction of the screen size on each side, 0..0.5), view
-      // (none|ao|normals|depth: debug views). Curve: the seed's criterion (thickness 1) with m = 2
-      // and 4 from 2 rays up, a thinner window, the defaults (samples=4: m 4, thickness 0.7, half
-      // resolution), 6 rays (the room's best, about 1/3 of vtkSSAOPass(32)'s time with the lean
-      // G-buffer), one full-resolution point, and the defaults and 6 rays with a 10 % guard band (the
-      // room's edge error: 0.077 -> 0.050 at 512 x 384 for about +3 ms; no change on open scenes).
-      {"obscurance", "screen-space obscurances (seed 003): Poisson-disc rays, 4x4 interleave, depth-aware filter",
-       {"samples=2,m=2,thickness=1", "samples=4,m=2,thickness=1", "samples=8,m=2,thickness=1",
-        "samples=4,m=4,thickness=1", "samples=8,m=4,thickness=1", "samples=4,m=4,thickness=0.5", "samples=4",
-        "samples=6", "samples=4,scale=1", "samples=4,guard=0.1", "samples=6,guard=0.1"},
-       {"samples", "m", "scale", "radius", "falloff", "interleave", "filter", "silhouette", "transfer", "bias",
-        "thickness", "tolerance", "guard", "view"}},
-  };
+std::vector<MethodInfo>& registry() {
+  static std::vector<MethodInfo> all;
   return all;
 }
 
-const MethodInfo& methodInfo(const std::string& name) {
-  std::string known;
-  for (const auto& m : methods()) {
-    if (m.name == name) return m;
-    known += (known.empty() ? "" : ", ") + m.name;
+std::string joined(const std::vector<std::string>& items, const char* sep) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : sep) + s;
+  return out;
+}
+
+std::string rangeText(const SettingSpec& s) {
+  std::ostringstream r;
+  switch (s.kind) {
+    case SettingKind::Integer: r << "an integer in " << s.min << ".." << s.max; break;
+    case SettingKind::Number: r << "a number in " << s.min << ".." << s.max; break;
+    case SettingKind::Flag: r << "0 or 1"; break;
+    case SettingKind::Choice: r << joined(s.choices, ", "); break;
   }
-  throw std::invalid_argument("unknown method '" + name + "' (known: " + known + ")");
+  return r.str();
+}
+
+// The base frame: no technique.
+const MethodRegistrar none{{"none", "no AO: the base frame", 0, {}, {""}, nullptr}};
+
+}  // namespace
+
+SettingMap parseSettings(const std::string& text) {
+  SettingMap out;
+  if (text.empty()) return out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    if (item.empty()) throw std::invalid_argument("settings '" + text + "' hold an empty item");
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
+      throw std::invalid_argument("setting '" + item + "' is not key=value");
+    if (!out.emplace(item.substr(0, eq), item.substr(eq + 1)).second)
+      throw std::invalid_argument("setting '" + item.substr(0, eq) + "' is given twice");
+  }
+  if (text.back() == ',') throw std::invalid_argument("settings '" + text + "' hold an empty item");
+  return out;
+}
+
+MethodSettings::MethodSettings(const std::string& method, const std::vector<SettingSpec>& specs, const SettingMap& values)
+    : method_(method), specs_(specs), values_(values) {
+  for (const auto& [key, value] : values_) {
+    const SettingSpec& s = spec(key);
+    switch (s.kind) {
+      case SettingKind::Integer: integer(key, 0); break;
+      case SettingKind::Number: number(key, 0.0); break;
+      case SettingKind::Flag: flag(key, false); break;
+      case SettingKind::Choice: choice(key, 0); break;
+    }
+  }
+}
+
+const SettingSpec& MethodSettings::spec(const std::string& key) const {
+  for (const auto& s : specs_)
+    if (s.key == key) return s;
+  std::vector<std::string> keys;
+  for (const auto& s : specs_) keys.push_back(s.key);
+  throw std::invalid_argument(method_ + ": unknown setting '" + key + "'" +
+                              (keys.empty() ? " (it takes none)" : " (known: " + joined(keys, ", ") + ")"));
 }
 
 namespace {
-void checkKeys(const SettingMap& s, const MethodInfo& m) {
-  const std::set<std::string> keys(m.keys.begin(), m.keys.end());
-  for (const auto& kv : s)
-    if (!keys.count(kv.first)) {
-      std::string known;
-      for (const auto& k : m.keys) known += (known.empty() ? "" : ", ") + k;
-      throw std::invalid_argument(m.name + ": unknown setting '" + kv.first + "'" +
-                                  (known.empty() ? " (it takes none)" : " (known: " + known + ")"));
-    }
+[[noreturn]] void badValue(const std::string& method, const SettingSpec& s, const std::string& value) {
+  throw std::invalid_argument(method + ": " + s.key + " must be " + rangeText(s) + ", got '" + value + "'");
 }
 }  // namespace
 
-int settingInt(const SettingMap& s, const std::string& method, const std::string& key, int fallback, int lo, int hi) {
-  auto it = s.find(key);
-  if (it == s.end()) return fallback;
+int MethodSettings::integer(const std::string& key, int fallback) const {
+  auto it = values_.find(key);
+  if (it == values_.end()) return fallback;
+  const SettingSpec& s = spec(key);
   std::size_t used = 0;
-  long v = 0;
+  long long v = 0;
   try {
-    v = std::stol(it->second, &used);
+    v = std::stoll(it->second, &used);
   } catch (...) {
     used = 0;
   }
-  if (used != it->second.size() || v < lo || v > hi)
-    throw std::invalid_argument(method + ": " + key + " must be an integer in " + std::to_string(lo) + ".." +
-                                std::to_string(hi) + ", got '" + it->second + "'");
+  if (used == 0 || used != it->second.size() || v < s.min || v > s.max) badValue(method_, s, it->second);
   return static_cast<int>(v);
 }
 
-double settingDouble(const SettingMap& s, const std::string& method, const std::string& key, double fallback,
-                     double lo, double hi) {
-  auto it = s.find(key);
-  if (it == s.end()) return fallback;
+double MethodSettings::number(const std::string& key, double fallback) const {
+  auto it = values_.find(key);
+  if (it == values_.end()) return fallback;
+  const SettingSpec& s = spec(key);
   std::size_t used = 0;
   double v = NAN;
   try {
@@ -101,72 +107,67 @@ double settingDouble(const SettingMap& s, const std::string& method, const std::
   } catch (...) {
     used = 0;
   }
-  if (used != it->second.size() || !std::isfinite(v) || v < lo || v > hi) {
-    std::ostringstream msg;
-    msg << method << ": " << key << " must be a number in " << lo << ".." << hi << ", got '" << it->second << "'";
-    throw std::invalid_argument(msg.str());
-  }
+  if (used == 0 || used != it->second.size() || !std::isfinite(v) || v < s.min || v > s.max)
+    badValue(method_, s, it->second);
   return v;
 }
 
-bool settingBool(const SettingMap& s, const std::string& method, const std::string& key, bool fallback) {
-  auto it = s.find(key);
-  if (it == s.end()) return fallback;
-  if (it->second == "1" || it->second == "true" || it->second == "on") return true;
-  if (it->second == "0" || it->second == "false" || it->second == "off") return false;
-  throw std::invalid_argument(method + ": " + key + " must be 0 or 1, got '" + it->second + "'");
+bool MethodSettings::flag(const std::string& key, bool fallback) const {
+  auto it = values_.find(key);
+  if (it == values_.end()) return fallback;
+  const std::string& v = it->second;
+  if (v == "1" || v == "true" || v == "on") return true;
+  if (v == "0" || v == "false" || v == "off") return false;
+  badValue(method_, spec(key), v);
+}
+
+int MethodSettings::choice(const std::string& key, int fallback) const {
+  auto it = values_.find(key);
+  if (it == values_.end()) return fallback;
+  const SettingSpec& s = spec(key);
+  const auto found = std::find(s.choices.begin(), s.choices.end(), it->second);
+  if (found == s.choices.end()) badValue(method_, s, it->second);
+  return static_cast<int>(found - s.choices.begin());
+}
+
+MethodRegistrar::MethodRegistrar(MethodInfo info) {
+  auto& all = registry();
+  for (const auto& m : all)
+    if (m.name == info.name) throw std::logic_error("method '" + info.name + "' registered twice");
+  const auto at = std::find_if(all.begin(), all.end(), [&](const MethodInfo& m) {
+    return m.order > info.order || (m.order == info.order && m.name > info.name);
+  });
+  all.insert(at, std::move(info));
+}
+
+const std::vector<MethodInfo>& methods() { return registry(); }
+
+const MethodInfo& methodInfo(const std::string& name) {
+  std::vector<std::string> known;
+  for (const auto& m : methods()) {
+    if (m.name == name) return m;
+    known.push_back(m.name);
+  }
+  throw std::invalid_argument("unknown method '" + name + "' (known: " + joined(known, ", ") + ")");
 }
 
 std::shared_ptr<AOTechnique> makeTechnique(const std::string& method, const std::string& setting) {
   const MethodInfo& info = methodInfo(method);
-  const SettingMap s = parseSettings(setting);
-  checkKeys(s, info);
-  if (method == "none") return nullptr;
-  if (method == "vtkssao") {
-    VtkSSAOSettings v;
-    v.kernelSize = static_cast<unsigned>(settingInt(s, method, "kernel", 32, 1, 1000));
-    v.blur = settingBool(s, method, "blur", false);
-    v.biasFraction = settingDouble(s, method, "bias", 0.01, 0.0, 1.0);
-    return std::make_shared<VtkSSAOTechnique>(v);
+  SettingMap values;
+  try {
+    values = parseSettings(setting);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(method + ": " + e.what());
   }
-  if (method == "obscurance") {
-    ObscuranceSettings o;
-    o.samples = settingInt(s, method, "samples", o.samples, 1, 64);
-    o.pointsPerRay = settingInt(s, method, "m", o.pointsPerRay, 1, 4);
-    o.resolutionScale = settingDouble(s, method, "scale", o.resolutionScale, 0.5, 1.0);
-    o.radius = settingDouble(s, method, "radius", o.radius, 0.0, 1e30);
-    if (s.count("falloff")) {
-      try {
-        o.falloff = parseFalloff(s.at("falloff"));
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(method + ": " + e.what());
-      }
-    }
-    if (s.count("interleave")) {
-      const std::string& v = s.at("interleave");
-      if (v == "shifts" || v == "1") o.interleave = Interleave::Shifts;
-      else if (v == "rotations") o.interleave = Interleave::Rotations;
-      else if (v == "off" || v == "0") o.interleave = Interleave::Off;
-      else throw std::invalid_argument(method + ": interleave must be shifts, rotations or off, got '" + v + "'");
-    }
-    o.filter = settingBool(s, method, "filter", o.filter);
-    o.silhouetteElimination = settingBool(s, method, "silhouette", o.silhouetteElimination);
-    o.ambientTransfer = settingBool(s, method, "transfer", o.ambientTransfer);
-    o.bias = settingDouble(s, method, "bias", o.bias, 0.0, 0.5);
-    o.thickness = settingDouble(s, method, "thickness", o.thickness, 1e-6, 4.0);
-    o.filterTolerance = settingDouble(s, method, "tolerance", o.filterTolerance, 1e-6, 1.0);
-    o.guard = settingDouble(s, method, "guard", o.guard, 0.0, 0.5);
-    if (s.count("view")) {
-      const std::string& v = s.at("view");
-      const char* names[] = {"none", "ao", "normals", "depth"};
-      int k = 0;
-      while (k < 4 && v != names[k]) ++k;
-      if (k == 4) throw std::invalid_argument(method + ": view must be none, ao, normals or depth, got '" + v + "'");
-      o.debugView = static_cast<ObscuranceDebugView>(k);
-    }
-    return std::make_shared<ObscuranceTechnique>(o);  // validate() rejects scales other than 1 and 0.5
-  }
-  throw std::logic_error("method '" + method + "' is listed but not constructible");
+  const MethodSettings settings(method, info.settings, values);
+  return info.make ? info.make(settings) : nullptr;
+}
+
+std::string settingsHelp(const MethodInfo& m) {
+  std::string out;
+  for (const auto& s : m.settings)
+    out += "  " + s.key + ": " + s.description + "; " + rangeText(s) + " (default " + s.defaultText + ")\n";
+  return out;
 }
 
 }  // namespace aokit
