@@ -1,5 +1,6 @@
-// aokit bench: scenes x methods x settings -> results.csv, chart.png, report.md.
+// aokit bench: scenes x methods x settings -> results.csv, chart.png, report.md, temporal.csv.
 #include <cstdio>
+#include <map>
 
 #include "Commands.h"
 #include "Options.h"
@@ -17,50 +18,56 @@ struct BenchArgs {
   std::vector<std::string> methodsArg;
   std::string size = "1024x768";
   std::string outDir = "aokit-bench";
+  std::string falloff;
   int samples = 256;
-  int frames = 7;
+  int frames = 9;
   std::uint64_t seed = 1;
   bool temporal = true;
 };
 
-const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes", "tank",
-                                                 "corridor", "room", "bunny", "fandisk"};
-
-// "vtkssao" -> all its bench settings; "vtkssao:kernel=16" -> that one.
-std::vector<std::pair<std::string, std::string>> parseRuns(const std::vector<std::string>& args) {
-  std::vector<std::pair<std::string, std::string>> runs;
-  for (const auto& a : args) {
-    const auto colon = a.find(':');
-    if (colon == std::string::npos) {
-      for (const auto& s : methodInfo(a).benchSettings) runs.emplace_back(a, s);
-    } else {
-      runs.emplace_back(a.substr(0, colon), a.substr(colon + 1));
-    }
-  }
-  return runs;
-}
+const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes", "tank", "corridor",
+                                                 "room",         "open-box",         "bunny", "fandisk"};
 
 void runBenchCommand(const BenchArgs& a) {
+  // Everything is checked before the output folder exists: a refused run leaves nothing behind.
   SceneOptions sizeOnly;
   sizeOnly.size = a.size;
   BenchConfig cfg;
   sizeOnly.imageSize(cfg.width, cfg.height);
-  cfg.scenes = a.scenes.empty() ? kDefaultScenes : a.scenes;
+  cfg.scenes = a.scenes.empty() ? kDefaultScenes : splitList(a.scenes, "--scenes");
   cfg.runs = parseRuns(a.methodsArg);
+  for (const auto& r : cfg.runs.empty() ? defaultBenchRuns() : cfg.runs) makeTechnique(r.first, r.second);
+  std::map<std::string, Scene> scenes;
+  for (const auto& name : cfg.scenes) {
+    Scene s = resolveScene(name);
+    applyFalloff(s, a.falloff);
+    scenes.emplace(name, std::move(s));
+  }
+  SequenceConfig seq;
+  if (a.temporal) {
+    Scene animated = resolveScene(seq.scene);
+    applyFalloff(animated, a.falloff);
+    scenes.emplace(seq.scene, std::move(animated));
+  }
   cfg.refSamples = a.samples;
   cfg.frames = a.frames;
   cfg.seed = a.seed;
-  cfg.loadScene = resolveScene;
+  cfg.loadScene = [&](const std::string& name) { return scenes.at(name); };
+
   ensureDirectory(a.outDir);
+  BenchCsvStream csv(a.outDir + "/results.csv");
+  cfg.onRow = [&](const BenchRow& row) { csv.append(row); };
   const BenchOutput out = runBench(cfg);
-  writeBenchCsv(a.outDir + "/results.csv", out.rows);
   writeErrorTimeChart(a.outDir + "/chart.png", out.rows);
   std::vector<SequenceRow> sequence;
   if (a.temporal) {
-    SequenceConfig seq;
     seq.runs = cfg.runs;
     seq.seed = cfg.seed;
-    seq.loadScene = resolveScene;
+    seq.width = cfg.width;
+    seq.height = cfg.height;
+    seq.refSamples = cfg.refSamples;
+    seq.frames = std::max(2, a.frames);
+    seq.loadScene = cfg.loadScene;
     sequence = runSequenceBench(seq);
     writeSequenceCsv(a.outDir + "/temporal.csv", sequence);
   }
@@ -73,13 +80,22 @@ void runBenchCommand(const BenchArgs& a) {
 void addBenchCommand(CLI::App& app) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "time and error of every method against the reference");
-  cmd->add_option("--scenes", args->scenes, "scenes (default: the default bench set)")->delimiter(',');
-  cmd->add_option("--methods", args->methodsArg, "method or method:setting (default: all)")->delimiter(';');
-  cmd->add_option("--size", args->size, "image size WxH")->capture_default_str();
-  cmd->add_option("--samples", args->samples, "reference rays per pixel")->capture_default_str()->check(
-      CLI::Range(1, 1 << 16));
-  cmd->add_option("--frames", args->frames, "timed frames per row (median)")->capture_default_str()->check(
-      CLI::Range(1, 1000));
+  cmd->add_option("--scenes", args->scenes,
+                  "scenes, separated by ',' or ';' (default: sphere-plane, sphere-offscreen, cubes, tank, corridor, "
+                  "room, open-box, bunny, fandisk)");
+  cmd->add_option("--methods", args->methodsArg,
+                  "methods, separated by ',' or ';': a method (all its bench settings) or method:key=value,key=value "
+                  "(default: all)");
+  cmd->add_option("--size", args->size, "image size WxH (the temporal run too)")->capture_default_str();
+  cmd->add_option("--samples", args->samples, "reference rays per pixel (the temporal run too)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1 << 16));
+  cmd->add_option("--frames", args->frames,
+                  "timed pairs (base frame, method frame) per row, and frames of the temporal run")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--falloff", args->falloff,
+                  "falloff for every scene: binary, wendland, sqrt, exponential (default: each scene's)");
   cmd->add_option("--seed", args->seed, "reference seed")->capture_default_str();
   cmd->add_option("--output,-o", args->outDir, "output folder")->capture_default_str();
   cmd->add_flag("!--no-temporal", args->temporal, "skip the temporal-stability run on the animated scene");

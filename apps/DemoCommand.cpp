@@ -18,6 +18,7 @@ namespace {
 struct DemoArgs {
   SceneOptions scene;
   std::string outDir = "aokit-demo";
+  std::string falloff;
   int samples = 256;
 };
 
@@ -29,13 +30,16 @@ std::string fileTag(const std::string& method, const std::string& setting) {
 }
 
 void runDemo(const DemoArgs& a) {
+  // Everything is checked before the output folder exists: a refused run leaves nothing behind.
   int w, h;
   a.scene.imageSize(w, h);
+  Scene scene = a.scene.load();
+  applyFalloff(scene, a.falloff);
+  for (const auto& [method, setting] : defaultBenchRuns()) makeTechnique(method, setting);
   ensureDirectory(a.outDir);
   const std::string dir = a.outDir + "/";
 
   // Every method's lit frame and AO-only frame.
-  Scene scene = a.scene.load();
   {
     SceneView view(scene, w, h);
     OffscreenWindow& window = view.window;
@@ -60,9 +64,9 @@ void runDemo(const DemoArgs& a) {
   BenchConfig cfg;
   cfg.width = w;
   cfg.height = h;
-  cfg.scenes = {a.scene.scene};
+  cfg.scenes = {a.scene.spec()};
   cfg.refSamples = a.samples;
-  cfg.loadScene = [&](const std::string&) { return a.scene.load(); };
+  cfg.loadScene = [&](const std::string&) { return scene; };
   cfg.onReference = [&](const Scene&, const SurfaceSamples&, const AOBuffer& ref) {
     writeAOPNG(dir + "reference-ao.png", w, h, ref.ao, ref.covered);
     std::vector<float> raw(ref.ao);
@@ -70,8 +74,9 @@ void runDemo(const DemoArgs& a) {
       if (!ref.covered[i]) raw[i] = -1.0f;  // -1 = no surface, as everywhere
     writeFloatImage(dir + "reference-ao.f32", w, h, raw);
   };
+  BenchCsvStream csv(dir + "results.csv");
+  cfg.onRow = [&](const BenchRow& row) { csv.append(row); };
   const BenchOutput out = runBench(cfg);
-  writeBenchCsv(dir + "results.csv", out.rows);
   writeErrorTimeChart(dir + "chart.png", out.rows);
   writeBenchReport(dir + "report.md", out.rows, out.references, "chart.png");
   std::printf("%sreference-ao.png, %sresults.csv, %schart.png, %sreport.md\n", dir.c_str(), dir.c_str(), dir.c_str(),
@@ -86,6 +91,7 @@ void addDemoCommand(CLI::App& app) {
   cmd->add_option("--output,-o", args->outDir, "output folder")->capture_default_str();
   cmd->add_option("--samples", args->samples, "reference rays per pixel")->capture_default_str()->check(
       CLI::Range(1, 1 << 16));
+  cmd->add_option("--falloff", args->falloff, "binary, wendland, sqrt, exponential (default: the scene's)");
   cmd->callback([args] { runDemo(*args); });
 }
 

@@ -8,6 +8,8 @@
 #include "core/Geometry.h"
 #include "io/MeshIO.h"
 #include "io/SceneFile.h"
+#include "methods/MethodRegistry.h"
+#include "reference/Falloff.h"
 #include "render/OffscreenWindow.h"
 #include "scenes/BuiltinScenes.h"
 
@@ -53,11 +55,57 @@ Scene resolveScene(const std::string& spec) {
                               "), a .json scene file or a mesh file");
 }
 
+std::vector<std::string> splitList(const std::vector<std::string>& args, const char* option) {
+  std::vector<std::string> items;
+  for (const auto& arg : args) {
+    std::string item;
+    for (std::size_t i = 0; i <= arg.size(); ++i) {
+      if (i < arg.size() && arg[i] != ',' && arg[i] != ';') {
+        item += arg[i];
+        continue;
+      }
+      if (item.empty()) throw std::invalid_argument(std::string(option) + " '" + arg + "' holds an empty item");
+      items.push_back(item);
+      item.clear();
+    }
+  }
+  return items;
+}
+
+std::vector<std::pair<std::string, std::string>> parseRuns(const std::vector<std::string>& args) {
+  // Rejoin "key=value" items with the method before them: commas also separate settings.
+  std::vector<std::string> specs;
+  for (const auto& item : splitList(args, "--methods")) {
+    const bool continuation = item.find(':') == std::string::npos && item.find('=') != std::string::npos;
+    if (continuation) {
+      if (specs.empty() || specs.back().find(':') == std::string::npos)
+        throw std::invalid_argument("--methods: setting '" + item + "' follows no method:setting");
+      specs.back() += "," + item;
+    } else {
+      specs.push_back(item);
+    }
+  }
+  std::vector<std::pair<std::string, std::string>> runs;
+  for (const auto& spec : specs) {
+    const auto colon = spec.find(':');
+    if (colon == std::string::npos) {
+      for (const auto& s : methodInfo(spec).benchSettings) runs.emplace_back(spec, s);
+    } else {
+      runs.emplace_back(spec.substr(0, colon), spec.substr(colon + 1));
+    }
+  }
+  return runs;
+}
+
+void applyFalloff(Scene& scene, const std::string& falloff) {
+  if (!falloff.empty()) scene.root->setFalloff(parseFalloff(falloff));
+}
+
 void SceneOptions::add(CLI::App& cmd) {
   std::string known;
   for (const auto& n : builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;
   cmd.add_option("--scene,-s", scene, "built-in scene (" + known + "), .json scene file or mesh file")
-      ->capture_default_str();
+      ->default_str("sphere-plane");
   cmd.add_option("--size", size, "image size WxH")->capture_default_str();
   cmd.add_option("--camera-position", cameraPosition, "camera position x y z")->expected(3)->delimiter(',');
   cmd.add_option("--focal-point", focalPoint, "camera focal point x y z")->expected(3)->delimiter(',');
@@ -66,8 +114,19 @@ void SceneOptions::add(CLI::App& cmd) {
   cmd.add_option("--ao-radius", aoRadius, "AO radius R in world units (default: the scene's)");
 }
 
+void SceneOptions::addPositional(CLI::App& cmd) {
+  cmd.add_option("scene", positional, "the scene, as --scene");
+}
+
+std::string SceneOptions::spec() const {
+  if (!positional.empty() && !scene.empty() && positional != scene)
+    throw std::invalid_argument("two scenes given: '" + positional + "' and --scene '" + scene + "'");
+  if (!positional.empty()) return positional;
+  return scene.empty() ? "sphere-plane" : scene;
+}
+
 Scene SceneOptions::load() const {
-  Scene s = resolveScene(scene);
+  Scene s = resolveScene(spec());
   if (!cameraPosition.empty()) s.camera.position = vec3Option(cameraPosition, "--camera-position");
   if (!focalPoint.empty()) s.camera.focalPoint = vec3Option(focalPoint, "--focal-point");
   if (!viewUp.empty()) s.camera.viewUp = vec3Option(viewUp, "--view-up");

@@ -11,13 +11,18 @@
 namespace aokit::cli {
 
 struct SceneOptions {
-  std::string scene = "sphere-plane";  // built-in name, .json scene file, or mesh file
+  std::string scene;       // --scene: built-in name, .json scene file, or mesh file (default sphere-plane)
+  std::string positional;  // the same as a positional argument (addPositional)
   std::string size = "1024x768";
   std::vector<double> cameraPosition, focalPoint, viewUp;
   std::optional<double> viewAngle;
   std::optional<double> aoRadius;
 
   void add(CLI::App& cmd);
+  // Also accept the scene as a positional argument (`aokit render bunny`).
+  void addPositional(CLI::App& cmd);
+  // The scene asked for: positional or --scene (both given and different: an error), else the default.
+  std::string spec() const;
   // Loads the scene and applies the overrides; throws a one-line error naming the bad value.
   Scene load() const;
   // Parses "WxH" (1..8192 each).
@@ -26,5 +31,15 @@ struct SceneOptions {
 
 // A built-in scene name, a .json scene file or a mesh file -> Scene.
 Scene resolveScene(const std::string& spec);
+
+// The list syntax of --scenes and --methods: items separated by ',' or ';', options repeatable.
+// In a method list an item "key=value" without a method continues the previous item's settings,
+// so "vtkssao:kernel=16,blur=1,obscurance" is two runs. Empty items are errors.
+std::vector<std::string> splitList(const std::vector<std::string>& args, const char* option);
+// Method list -> (method, setting) runs; a bare method stands for all its bench settings.
+std::vector<std::pair<std::string, std::string>> parseRuns(const std::vector<std::string>& args);
+
+// --falloff NAME (binary, wendland, sqrt, exponential) on the scene's root, when given.
+void applyFalloff(Scene& scene, const std::string& falloff);
 
 }  // namespace aokit::cli

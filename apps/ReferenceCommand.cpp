@@ -19,6 +19,7 @@ struct ReferenceArgs {
   SceneOptions scene;
   int samples = 256;
   std::string falloff;
+  std::string quantity = "occlusion";
   std::uint64_t seed = 1;
   std::string output = "reference";
 };
@@ -26,12 +27,15 @@ struct ReferenceArgs {
 void runReference(const ReferenceArgs& a) {
   int w, h;
   a.scene.imageSize(w, h);
+  if (a.quantity != "occlusion" && a.quantity != "transfer")
+    throw std::invalid_argument("--quantity must be occlusion or transfer, got '" + a.quantity + "'");
   Scene scene = a.scene.load();
-  if (!a.falloff.empty()) scene.root->setFalloff(parseFalloff(a.falloff));
+  applyFalloff(scene, a.falloff);
   SceneView view(scene, w, h);
   const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
   EmbreeScene embree(*scene.root);
   ReferenceOptions opt = sceneReferenceOptions(*scene.root, a.samples, a.seed);
+  opt.quantity = a.quantity == "transfer" ? AOQuantity::Transfer : AOQuantity::Occlusion;
   Progress progress("reference " + scene.name);
   opt.progress = progress.reporter();
   ReferenceStats stats;
@@ -54,6 +58,9 @@ void addReferenceCommand(CLI::App& app) {
   args->scene.add(*cmd);
   cmd->add_option("--samples", args->samples, "rays per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 16));
   cmd->add_option("--falloff", args->falloff, "binary, wendland, sqrt, exponential (default: the scene's)");
+  cmd->add_option("--quantity", args->quantity,
+                  "occlusion, or transfer (1 - W, the ambient transfer of seed 003, eq. 6, from the albedos)")
+      ->capture_default_str();
   cmd->add_option("--seed", args->seed, "sampling seed")->capture_default_str();
   cmd->add_option("--output,-o", args->output, "output prefix: PREFIX.png, PREFIX.f32, PREFIX-stderr.f32")
       ->capture_default_str();

@@ -18,13 +18,17 @@ struct RenderArgs {
   std::string output = "aokit.png";
   bool aoOnly = false;
   std::string aoFloat;
+  std::string falloff;
+  bool settingGiven = false;
   int frame = 0;
 };
 
 void runRender(const RenderArgs& a) {
   int w, h;
   a.scene.imageSize(w, h);
+  if (a.settingGiven && a.setting.empty()) throw std::invalid_argument("--setting is empty (give key=value[,key=value])");
   Scene scene = a.scene.load();
+  applyFalloff(scene, a.falloff);
   if (a.frame < 0 || a.frame >= scene.frameCount)
     throw std::invalid_argument("--frame " + std::to_string(a.frame) + " is out of range (scene has " +
                                 std::to_string(scene.frameCount) + " frames)");
@@ -55,10 +59,17 @@ void addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "render one frame of a scene to a PNG");
   args->scene.add(*cmd);
+  args->scene.addPositional(*cmd);
   std::string known;
   for (const auto& m : methods()) known += (known.empty() ? "" : ", ") + m.name;
   cmd->add_option("--method,-m", args->method, "AO method: " + known)->capture_default_str();
-  cmd->add_option("--setting", args->setting, "method settings, key=value[,key=value]");
+  cmd->add_option("--setting", args->setting, "method settings, key=value[,key=value] (see below)")
+      ->each([args](const std::string&) { args->settingGiven = true; });
+  cmd->add_option("--falloff", args->falloff, "binary, wendland, sqrt, exponential (default: the scene's)");
+  std::string footer = "Method settings:";
+  for (const auto& m : methods())
+    if (!m.settings.empty()) footer += "\n" + m.name + "\n" + settingsHelp(m);
+  cmd->footer(footer);
   cmd->add_option("--output,-o", args->output, "PNG file to write")->capture_default_str();
   cmd->add_flag("--ao-only", args->aoOnly, "white, ambient-only material: the image shows 1 - AO");
   cmd->add_option("--ao-float", args->aoFloat,

@@ -8,6 +8,7 @@
 
 #include "bench/Bench.h"
 #include "bench/BenchResult.h"
+#include "bench/PairedTiming.h"
 #include "core/Geometry.h"
 #include "methods/MethodRegistry.h"
 #include "scenes/BuiltinScenes.h"
@@ -32,8 +33,10 @@ BenchConfig tinyConfig() {
 }  // namespace
 
 TEST(Bench, CsvHasTheRequiredColumnsInOrder) {
-  const std::vector<std::string> required = {"scene", "method", "setting", "width", "height", "base_ms", "frame_ms",
-                                             "ao_ms", "rmse", "mae", "p99", "ssim", "memory_bytes"};
+  const std::vector<std::string> required = {"scene",   "method",   "setting",  "quantity", "falloff",    "width",
+                                             "height",  "base_ms",  "frame_ms", "ao_ms",    "ao_ms_q1",   "ao_ms_q3",
+                                             "stages",  "prepare_ms", "rmse",   "mae",      "p99",        "ssim",
+                                             "memory_bytes", "pixels", "ref_samples", "ref_stderr", "ref_noise"};
   const auto& cols = benchCsvColumns();
   ASSERT_GE(cols.size(), required.size());
   for (std::size_t i = 0; i < required.size(); ++i) EXPECT_EQ(cols[i], required[i]);
@@ -72,9 +75,71 @@ TEST(Bench, NoAORowEqualsTheReferenceMeasuredAgainstZero) {
   EXPECT_EQ(out.rows[0].memoryBytes, 0u);
   EXPECT_GT(out.rows[1].memoryBytes, 0u);
   EXPECT_GT(out.rows[1].frameMs, 0.0);
-  EXPECT_DOUBLE_EQ(out.rows[1].aoMs, out.rows[1].frameMs - out.rows[1].baseMs);
+  for (const auto& r : out.rows) {
+    // The median of the paired differences lies inside its own quartiles, whatever its sign.
+    EXPECT_LE(r.aoQ1Ms, r.aoMs);
+    EXPECT_LE(r.aoMs, r.aoQ3Ms);
+    EXPECT_EQ(r.quantity, "occlusion");
+    EXPECT_EQ(r.falloff, "binary");
+  }
+  EXPECT_TRUE(out.rows[0].stages.empty());
+  EXPECT_EQ(out.rows[1].stages.rfind("vtkssao=", 0), 0u) << out.rows[1].stages;
   ASSERT_EQ(out.references.size(), 1u);
   EXPECT_GT(out.references[0].stdErr, 0.0);
+  // The measured noise floor is of the same order as the formula's (which is conservative:
+  // stratified samples err less than independent ones).
+  EXPECT_GT(out.references[0].noise, 0.0);
+  EXPECT_LT(out.references[0].noise, 1.5 * out.references[0].stdErr);
+}
+
+TEST(Bench, QuantilesInterpolateBetweenOrderStatistics) {
+  EXPECT_DOUBLE_EQ(quantile({4, 1, 3, 2}, 0.5), 2.5);
+  EXPECT_DOUBLE_EQ(quantile({4, 1, 3, 2}, 0.25), 1.75);
+  EXPECT_DOUBLE_EQ(quantile({4, 1, 3, 2}, 0.75), 3.25);
+  EXPECT_DOUBLE_EQ(quantile({-2.0}, 0.25), -2.0);
+  EXPECT_THROW(quantile({}, 0.5), std::invalid_argument);
+}
+
+TEST(Bench, TransferRowsAreJudgedAgainstTheTransferReference) {
+  BenchConfig cfg = tinyConfig();
+  cfg.scenes = {"room"};
+  cfg.runs = {{"obscurance", "transfer=1"}, {"obscurance", ""}};
+  const BenchOutput out = runBench(cfg);
+  ASSERT_EQ(out.rows.size(), 2u);
+  EXPECT_EQ(out.rows[0].quantity, "transfer");
+  EXPECT_EQ(out.rows[1].quantity, "occlusion");
+  // A white room: 1 - W is far below the occlusion, so judged against the occlusion reference the
+  // transfer row would look much worse than it does against its own.
+  EXPECT_LT(out.rows[0].rmse, 0.1);
+  EXPECT_GT(out.rows[0].refStdErr, 0.0);
+}
+
+TEST(Bench, RowsStreamAsTheyFinishAndEverySceneLoadsFirst) {
+  BenchConfig cfg = tinyConfig();
+  cfg.scenes = {"sphere-plane", "missing"};
+  int rows = 0;
+  cfg.onRow = [&](const BenchRow&) { ++rows; };
+  cfg.loadScene = [](const std::string& n) { return makeBuiltinScene(n); };
+  EXPECT_THROW(runBench(cfg), std::invalid_argument);
+  EXPECT_EQ(rows, 0) << "a bad second scene must fail before the first row";
+
+  cfg.scenes = {"sphere-plane"};
+  const auto path = (std::filesystem::temp_directory_path() / "aokit-bench-stream.csv").string();
+  {
+    BenchCsvStream csv(path);
+    cfg.onRow = [&](const BenchRow& r) {
+      csv.append(r);
+      ++rows;
+    };
+    runBench(cfg);
+  }
+  std::ifstream in(path);
+  std::string line;
+  int lines = 0;
+  while (std::getline(in, line)) ++lines;
+  std::filesystem::remove(path);
+  EXPECT_EQ(rows, 2);
+  EXPECT_EQ(lines, 3);  // header + one line per row
 }
 
 TEST(Bench, UnknownMethodOrSettingFailsBeforeRendering) {

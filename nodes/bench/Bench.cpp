@@ -1,16 +1,20 @@
 #include "bench/Bench.h"
 
-#include <cstdio>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 
-#include "bench/FrameTimer.h"
+#include "bench/PairedTiming.h"
+#include "bench/SceneReferences.h"
 #include "core/Progress.h"
 #include "methods/MethodRegistry.h"
-#include "reference/AOReference.h"
-#include "reference/EmbreeScene.h"
+#include "reference/Falloff.h"
 #include "reference/Metrics.h"
 #include "render/FrameCapture.h"
 #include "render/SceneView.h"
+#include "render/StageTimer.h"
 
 namespace aokit {
 
@@ -23,27 +27,90 @@ std::vector<std::pair<std::string, std::string>> defaultBenchRuns() {
 
 namespace {
 
-ReferenceSummary referenceFor(const Scene& scene, const SurfaceSamples& surfaces, const BenchConfig& cfg,
-                              AOBuffer& reference) {
-  EmbreeScene embree(*scene.root);
-  ReferenceOptions opt = sceneReferenceOptions(*scene.root, cfg.refSamples, cfg.seed);
-  Progress progress("reference " + scene.name, cfg.progress);
-  opt.progress = progress.reporter();
-  ReferenceStats stats;
-  reference = computeReferenceAO(embree, surfaces, opt, &stats);
+// One scene's rows: the method's view and a base view of the same scene, timed as pairs.
+void benchScene(Scene& scene, const BenchConfig& cfg, const std::vector<std::pair<std::string, std::string>>& runs,
+                BenchOutput& out) {
+  SceneView view(scene, cfg.width, cfg.height);
+  const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
+  std::size_t covered = 0;
+  for (auto c : surfaces.covered) covered += c;
+  if (covered == 0) throw std::runtime_error(scene.name + ": the camera sees no surface (no covered pixels)");
+
+  SceneReferences references(scene, surfaces, cfg.refSamples, cfg.seed, cfg.progress);
+  out.references.push_back(references.summary(cfg.measureRawThroughput));
+  if (cfg.onReference) cfg.onReference(scene, surfaces, references.get(AOQuantity::Occlusion, scene.root->falloff()).ao);
+
+  SceneView base(scene, cfg.width, cfg.height);
+  base.renderer.setApplyTechnique(false);
+  base.renderer.sync();
+  auto baseFrame = [&] {
+    base.renderer.sync();
+    base.window.render();
+    base.window.finish();
+  };
+
+  Progress progress("bench " + scene.name, cfg.progress);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    throwIfInterrupted();
+    const auto& [method, setting] = runs[i];
+    std::shared_ptr<AOTechnique> technique = makeTechnique(method, setting);
+    BenchRow row;
+    row.scene = scene.name;
+    row.method = method;
+    row.setting = setting;
+    row.width = cfg.width;
+    row.height = cfg.height;
+    if (technique) {
+      const auto t0 = std::chrono::steady_clock::now();
+      technique->ensurePrepared(*scene.root);
+      row.prepareMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      technique->setStageTiming(true);
+    }
+    scene.root->setTechnique(technique);
+    view.renderer.setShadingMode(ShadingMode::Lit);
+    view.renderer.sync();
+    const PairedTiming timing = timePairs(
+        baseFrame,
+        [&] {
+          view.renderer.sync();
+          view.window.render();
+          view.window.finish();
+          return technique ? technique->stageTimes() : StageTimes{};
+        },
+        cfg.warmup, cfg.frames);
+    row.baseMs = timing.baseMs;
+    row.frameMs = timing.frameMs;
+    row.aoMs = timing.aoMs;
+    row.aoQ1Ms = timing.aoQ1Ms;
+    row.aoQ3Ms = timing.aoQ3Ms;
+    row.stages = formatStageTimes(timing.stages);
+    if (technique) technique->setStageTiming(false);
+
+    const AOQuantity quantity = technique ? technique->quantity() : AOQuantity::Occlusion;
+    const Falloff falloff = (technique && technique->falloffOverride()) ? *technique->falloffOverride()
+                                                                        : scene.root->falloff();
+    row.quantity = quantity == AOQuantity::Transfer ? "transfer" : "occlusion";
+    row.falloff = falloffName(falloff);
+    const auto& reference = references.get(quantity, falloff);
+    const AOBuffer ao = captureAO(view.window, view.renderer, surfaces.covered);
+    const AOErrorMetrics m = compareAO(ao, reference.ao);
+    row.rmse = m.rmse;
+    row.mae = m.meanAbsError;
+    row.p99 = m.p99AbsError;
+    row.ssim = m.ssim;
+    row.pixels = m.pixels;
+    row.memoryBytes = technique ? technique->memoryBytes() : 0;
+    row.refSamples = cfg.refSamples;
+    row.refStdErr = reference.stdErr;
+    row.refNoise = reference.noise;
+    out.rows.push_back(row);
+    if (cfg.onRow) cfg.onRow(row);
+    // Detach here, before the next technique is built: one technique's GPU resources at a time.
+    scene.root->setTechnique(nullptr);
+    view.renderer.sync();
+    progress.update(double(i + 1) / runs.size());
+  }
   progress.done();
-  ReferenceSummary s;
-  s.scene = scene.name;
-  s.samples = cfg.refSamples;
-  s.seconds = stats.seconds;
-  s.raysPerSecond = stats.raysPerSecond;
-  if (cfg.measureRawThroughput && opt.falloff == Falloff::Binary)
-    s.rawRaysPerSecond = measureRawOccludedThroughput(embree, surfaces, opt);
-  s.stdErr = meanStandardError(reference);
-  s.bvhSeconds = embree.stats().buildSeconds;
-  s.bvhBytes = embree.stats().memoryBytes;
-  s.triangles = embree.stats().triangles;
-  return s;
 }
 
 }  // namespace
@@ -51,64 +118,16 @@ ReferenceSummary referenceFor(const Scene& scene, const SurfaceSamples& surfaces
 BenchOutput runBench(const BenchConfig& cfg) {
   if (!cfg.loadScene) throw std::invalid_argument("bench: no scene loader");
   if (cfg.refSamples < 1) throw std::invalid_argument("reference samples must be at least 1");
+  if (cfg.frames < 1 || cfg.warmup < 0) throw std::invalid_argument("bench: needs at least one timed pair");
   const auto runs = cfg.runs.empty() ? defaultBenchRuns() : cfg.runs;
   for (const auto& r : runs) makeTechnique(r.first, r.second);  // validate every setting up front
+  // Every scene (and its meshes) before the first row: a missing mesh fails now, not at scene 7.
+  std::vector<Scene> scenes;
+  for (const auto& name : cfg.scenes) scenes.push_back(cfg.loadScene(name));
   BenchOutput out;
-  for (const auto& name : cfg.scenes) {
+  for (Scene& scene : scenes) {
     throwIfInterrupted();
-    Scene scene = cfg.loadScene(name);
-    SceneView view(scene, cfg.width, cfg.height);
-    OffscreenWindow& window = view.window;
-    SceneRenderer& renderer = view.renderer;
-    const SurfaceSamples surfaces = captureSurfaces(window, renderer);
-    std::size_t covered = 0;
-    for (auto c : surfaces.covered) covered += c;
-    if (covered == 0) throw std::runtime_error(scene.name + ": the camera sees no surface (no covered pixels)");
-
-    AOBuffer reference;
-    out.references.push_back(referenceFor(scene, surfaces, cfg, reference));
-    if (cfg.onReference) cfg.onReference(scene, surfaces, reference);
-
-    auto frame = [&] {
-      window.render();
-      window.finish();
-    };
-    scene.root->setTechnique(nullptr);
-    renderer.sync();
-    const double baseMs = timeFrames(frame, cfg.warmup, cfg.frames).medianMs;
-    Progress progress("bench " + scene.name, cfg.progress);
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      throwIfInterrupted();
-      const auto& [method, setting] = runs[i];
-      auto technique = makeTechnique(method, setting);
-      scene.root->setTechnique(technique);
-      renderer.setShadingMode(ShadingMode::Lit);
-      renderer.sync();
-      BenchRow row;
-      row.scene = scene.name;
-      row.method = method;
-      row.setting = setting;
-      row.width = cfg.width;
-      row.height = cfg.height;
-      row.baseMs = baseMs;
-      row.frameMs = technique ? timeFrames(frame, cfg.warmup, cfg.frames).medianMs : baseMs;
-      row.aoMs = row.frameMs - row.baseMs;
-      const AOBuffer ao = captureAO(window, renderer, surfaces.covered);
-      const AOErrorMetrics m = compareAO(ao, reference);
-      row.rmse = m.rmse;
-      row.mae = m.meanAbsError;
-      row.p99 = m.p99AbsError;
-      row.ssim = m.ssim;
-      row.pixels = m.pixels;
-      row.memoryBytes = technique ? technique->memoryBytes() : 0;
-      row.refSamples = cfg.refSamples;
-      row.refStdErr = out.references.back().stdErr;
-      out.rows.push_back(row);
-      progress.update(double(i + 1) / runs.size());
-    }
-    progress.done();
-    scene.root->setTechnique(nullptr);
-    renderer.sync();
+    benchScene(scene, cfg, runs, out);
   }
   return out;
 }

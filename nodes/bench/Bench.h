@@ -1,6 +1,9 @@
 #pragma once
-// The bench: for each scene, one G-buffer frame, the Embree reference on its pixels, the base
-// frame time, then every (method, setting): its frame time and its AO against the reference.
+// The bench: for each scene, one G-buffer frame, the Embree references on its pixels, then every
+// (method, setting): its one-time preparation, its frame time as interleaved pairs against the
+// base frame (a second view of the same scene without the technique), its GPU stages, and its AO
+// against the reference of the quantity it estimates.
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <utility>
@@ -18,12 +21,15 @@ struct BenchConfig {
   int width = 1024, height = 768;
   int refSamples = 256;  //!< reference rays per pixel
   std::uint64_t seed = 1;
-  int warmup = 2, frames = 7;
+  int warmup = 2;        //!< untimed pairs before the timed ones
+  int frames = 9;        //!< timed pairs (base frame, method frame) per row
   bool measureRawThroughput = true;
   bool progress = true;
   std::function<Scene(const std::string&)> loadScene;  // name/spec -> scene
-  // Called after each scene with its reference (for `aokit demo` / `aokit reference` outputs).
+  // Called after each scene with its (occlusion) reference (for `aokit demo` outputs).
   std::function<void(const Scene&, const SurfaceSamples&, const AOBuffer&)> onReference;
+  // Called with each row as it finishes (results.csv streams them).
+  std::function<void(const BenchRow&)> onRow;
 };
 
 struct BenchOutput {
@@ -31,8 +37,9 @@ struct BenchOutput {
   std::vector<ReferenceSummary> references;
 };
 
-// Throws std::invalid_argument on an unknown method or setting (checked before any rendering),
-// and std::runtime_error when a scene covers no pixel.
+// Every scene is loaded and every (method, setting) built before the first row, so bad input
+// fails at once (std::invalid_argument, std::runtime_error). Throws std::runtime_error when a
+// scene covers no pixel.
 BenchOutput runBench(const BenchConfig& config);
 
 // Every method's bench settings, in registry order.

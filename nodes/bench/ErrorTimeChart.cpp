@@ -64,7 +64,7 @@ void writeErrorTimeChart(const std::string& path, const std::vector<BenchRow>& r
     if (!chart) continue;
     chart->SetTitle(scenes[si]);
     chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE vs reference");
-    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("AO time (ms)");
+    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("AO time (ms): median of paired differences, bar = quartiles");
     chart->SetShowLegend(true);
     // Error axis from 0, so the gap between curves reads as a ratio.
     double maxErr = 0;
@@ -87,7 +87,7 @@ void writeErrorTimeChart(const std::string& path, const std::vector<BenchRow>& r
       table->AddColumn(y);
       table->SetNumberOfRows(static_cast<vtkIdType>(pts.size()));
       for (std::size_t i = 0; i < pts.size(); ++i) {
-        table->SetValue(static_cast<vtkIdType>(i), 0, std::max(0.0, pts[i]->aoMs));
+        table->SetValue(static_cast<vtkIdType>(i), 0, pts[i]->aoMs);  // never clamped: the bars show the spread
         table->SetValue(static_cast<vtkIdType>(i), 1, pts[i]->rmse);
       }
       vtkPlot* plot = chart->AddPlot(pts.size() > 1 ? vtkChart::LINE : vtkChart::POINTS);
@@ -96,6 +96,26 @@ void writeErrorTimeChart(const std::string& path, const std::vector<BenchRow>& r
       plot->SetColor(c[0], c[1], c[2], 255);
       plot->SetWidth(2.0);
       if (auto* line = vtkPlotLine::SafeDownCast(plot)) line->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+      // Each point's AO-time spread: a horizontal bar over its paired differences' quartiles.
+      for (const BenchRow* p : pts) {
+        vtkNew<vtkTable> bar;
+        vtkNew<vtkFloatArray> bx, by;
+        bx->SetName("ao_ms");
+        by->SetName("spread");
+        bar->AddColumn(bx);
+        bar->AddColumn(by);
+        bar->SetNumberOfRows(2);
+        bar->SetValue(0, 0, p->aoQ1Ms);
+        bar->SetValue(1, 0, p->aoQ3Ms);
+        bar->SetValue(0, 1, p->rmse);
+        bar->SetValue(1, 1, p->rmse);
+        vtkPlot* spread = chart->AddPlot(vtkChart::LINE);
+        spread->SetInputData(bar, 0, 1);
+        spread->SetColor(c[0], c[1], c[2], 160);
+        spread->SetWidth(1.0);
+        spread->SetLabel("");
+        spread->SetLegendVisibility(false);
+      }
     }
   }
   window.render();

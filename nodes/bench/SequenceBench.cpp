@@ -20,6 +20,8 @@ namespace aokit {
 namespace {
 
 // One pass over the animation with the camera held at its first pose or following its path.
+// First the G-buffer, reference and surface matches of every frame; then each method over all
+// frames, its technique built and prepared once and kept across them (as an application would).
 std::vector<SequenceRow> runSequence(const SequenceConfig& cfg, const std::vector<std::pair<std::string, std::string>>& runs,
                                      bool moveCamera) {
   Scene scene = cfg.loadScene(cfg.scene);
@@ -30,70 +32,76 @@ std::vector<SequenceRow> runSequence(const SequenceConfig& cfg, const std::vecto
   OffscreenWindow& window = view.window;
   SceneRenderer& renderer = view.renderer;
   const std::string mode = moveCamera ? "moving" : "held";
-
-  SurfaceSamples prevSurfaces;
-  FrameCamera prevCamera;
-  AOBuffer prevReference;
-  std::vector<AOBuffer> prevMethod(runs.size());
-  double refChange = 0.0;
-  std::vector<double> change(runs.size(), 0.0), rmse(runs.size(), 0.0);
-  std::size_t matched = 0;
-  int pairs = 0;
-  Progress progress("sequence " + scene.name + " (camera " + mode + ")", cfg.progress);
-  for (int k = 0; k < cfg.frames; ++k) {
-    throwIfInterrupted();
+  auto showFrame = [&](int k) {
     const int frame = static_cast<int>(static_cast<long>(k) * (scene.frameCount - 1) / (cfg.frames - 1));
     scene.animate(scene, frame);
-    scene.root->setTechnique(nullptr);
     renderer.sync();
     renderer.applyCamera(moveCamera ? scene.camera : held);
-    SurfaceSamples surfaces = captureSurfaces(window, renderer);
+  };
+
+  Progress progress("sequence " + scene.name + " (camera " + mode + ")", cfg.progress);
+  const double steps = static_cast<double>(cfg.frames) * (1 + runs.size());
+  std::vector<SurfaceSamples> surfaces(cfg.frames);
+  std::vector<AOBuffer> reference(cfg.frames);
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> match(cfg.frames);
+  FrameCamera previousCamera;
+  for (int k = 0; k < cfg.frames; ++k) {
+    throwIfInterrupted();
+    scene.root->setTechnique(nullptr);
+    showFrame(k);
+    surfaces[k] = captureSurfaces(window, renderer);
     const FrameCamera camera = frameCamera(window.renderer(), cfg.width, cfg.height);
     EmbreeScene embree(*scene.root);
     // Same seed every frame: a static pixel with unchanged surroundings gets the same rays and the
     // same value, so with a held camera the reference's change is the true change.
-    AOBuffer reference = computeReferenceAO(embree, surfaces, sceneReferenceOptions(*scene.root, cfg.refSamples, cfg.seed));
-    std::vector<AOBuffer> method(runs.size());
-    for (std::size_t r = 0; r < runs.size(); ++r) {
-      scene.root->setTechnique(makeTechnique(runs[r].first, runs[r].second));
-      renderer.sync();
-      method[r] = captureAO(window, renderer, surfaces.covered);
-      rmse[r] += compareAO(method[r], reference).rmse;
-    }
-    scene.root->setTechnique(nullptr);
-    renderer.sync();
-    if (k > 0) {
-      const auto match = matchSurfaces(prevSurfaces, prevCamera, surfaces);
-      if (!match.empty()) {
-        ++pairs;
-        matched += match.size();
-        refChange += meanChange(prevReference, reference, match);
-        for (std::size_t r = 0; r < runs.size(); ++r) change[r] += meanChange(prevMethod[r], method[r], match);
-      }
-    }
-    prevSurfaces = std::move(surfaces);
-    prevCamera = camera;
-    prevReference = std::move(reference);
-    prevMethod = std::move(method);
-    progress.update(double(k + 1) / cfg.frames);
+    reference[k] = computeReferenceAO(embree, surfaces[k], sceneReferenceOptions(*scene.root, cfg.refSamples, cfg.seed));
+    if (k > 0) match[k] = matchSurfaces(surfaces[k - 1], previousCamera, surfaces[k]);
+    previousCamera = camera;
+    progress.update((k + 1) / steps);
   }
-  progress.done();
+
+  double refChange = 0.0;
+  std::size_t matched = 0;
+  int pairs = 0;
+  for (int k = 1; k < cfg.frames; ++k)
+    if (!match[k].empty()) {
+      ++pairs;
+      matched += match[k].size();
+      refChange += meanChange(reference[k - 1], reference[k], match[k]);
+    }
   if (pairs == 0) throw std::runtime_error(scene.name + ": no surface point is seen in two consecutive frames");
 
   std::vector<SequenceRow> rows;
   for (std::size_t r = 0; r < runs.size(); ++r) {
+    auto technique = makeTechnique(runs[r].first, runs[r].second);
+    if (technique) technique->ensurePrepared(*scene.root);
+    scene.root->setTechnique(technique);
+    double change = 0.0, rmse = 0.0;
+    AOBuffer previous;
+    for (int k = 0; k < cfg.frames; ++k) {
+      throwIfInterrupted();
+      showFrame(k);
+      AOBuffer ao = captureAO(window, renderer, surfaces[k].covered);
+      rmse += compareAO(ao, reference[k]).rmse;
+      if (k > 0 && !match[k].empty()) change += meanChange(previous, ao, match[k]);
+      previous = std::move(ao);
+      progress.update((cfg.frames * (r + 1) + k + 1) / steps);
+    }
+    scene.root->setTechnique(nullptr);
+    renderer.sync();
     SequenceRow row;
     row.scene = scene.name;
     row.method = runs[r].first;
     row.setting = runs[r].second;
     row.camera = mode;
     row.frames = cfg.frames;
-    row.temporalChange = change[r] / pairs;
+    row.temporalChange = change / pairs;
     row.refTemporalChange = refChange / pairs;
-    row.meanRmse = rmse[r] / cfg.frames;
+    row.meanRmse = rmse / cfg.frames;
     row.matchedPixels = matched / static_cast<std::size_t>(pairs);
     rows.push_back(row);
   }
+  progress.done();
   return rows;
 }
 

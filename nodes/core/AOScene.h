@@ -7,7 +7,7 @@
 namespace aokit {
 
 // Falloff of occlusion with the distance d to the occluder, over the AO radius R.
-enum class Falloff { Binary, Wendland, Sqrt, Exponential };
+enum class Falloff : int { Binary, Wendland, Sqrt, Exponential };
 
 // Root group of an AO-shaded scene: holds the AO radius and one swappable technique.
 class AOScene : public Group {

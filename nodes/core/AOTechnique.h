@@ -4,6 +4,7 @@
 // through it.
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@ class vtkRenderer;
 namespace aokit {
 
 class AOScene;
+enum class Falloff;
 
 // What a technique's AO buffer estimates: plain occlusion A (1/pi integral of V k(d) cos), or
 // 1 - W with W the ambient transfer function of seed 003 (eq. 6: obscurance with multiple
@@ -31,6 +33,9 @@ class AOTechnique {
 
   virtual std::string name() const = 0;
   virtual AOQuantity quantity() const { return AOQuantity::Occlusion; }
+  // The falloff a setting imposes instead of the scene's (the bench then judges the row against a
+  // reference with that falloff, and says so).
+  virtual std::optional<Falloff> falloffOverride() const { return std::nullopt; }
 
   // One-time CPU work before the first frame, such as bakes; `progress` reports fractions in
   // [0, 1] and may throw to cancel. Called once through ensurePrepared() (the scene renderer does

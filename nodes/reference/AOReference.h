@@ -8,7 +8,14 @@
 // rays. Binary falloff needs only occlusion rays (rtcOccluded1, tfar = R); the others need the hit
 // distance (rtcIntersect1). Samples are stratified (HemisphereSampler) and decorrelated per pixel,
 // and rays start from robust origins (SurfaceRay). Results depend on (samples, seed) only, never
-// on the thread count.
+// on the thread count. Pixels of props that receive no AO (SurfaceSamples::receives) get 0.
+//
+// With quantity Transfer it estimates 1 - W instead, W the ambient transfer function of seed 003,
+// eq. 6, per colour c on the same rays: with the fuzzy membership mu = 1 - k(d) (1 for a ray that
+// leaves R open) and a_c the albedo of the geometry the ray hits,
+//     W_c = mean(mu) / (1 - mean((1 - mu) a_c)),
+// reported as the mean of 1 - W_c over the three colours (what the methods' read-back reports).
+// Its standard error is the ratio estimator's (delta method), averaged over colours.
 #include <cstdint>
 #include <functional>
 
@@ -25,6 +32,7 @@ struct ReferenceOptions {
   std::uint64_t seed = 1;             //!< same seed, same samples -> bit-identical output
   int threads = 0;                    //!< worker threads; 0 = hardware concurrency
   float rayOffset = 0.0f;             //!< origin offset in world units; 0 = defaultRayOffset()
+  AOQuantity quantity = AOQuantity::Occlusion;  //!< occlusion A, or 1 - W (ambient transfer)
   std::function<void(double)> progress;  //!< fraction done, on the calling thread; throw to cancel
 };
 
@@ -43,11 +51,26 @@ struct ReferenceStats {
 AOBuffer computeReferenceAO(const EmbreeScene& scene, const SurfaceSamples& samples, const ReferenceOptions& options,
                             ReferenceStats* stats = nullptr);
 
-// Rays per second of plain rtcOccluded1 on the same occlusion rays (same origins, directions,
-// tfar = R) from the same number of threads, with the rays generated beforehand and not timed:
-// the ceiling computeReferenceAO is compared against. Uses every k-th row (all rays of its covered
-// pixels), k chosen so that about maxRays rays are held in memory (48 bytes each).
-double measureRawOccludedThroughput(const EmbreeScene& scene, const SurfaceSamples& samples,
-                                    const ReferenceOptions& options, std::uint64_t maxRays = 1u << 21);
+// Rays per second of Embree alone on the same rays computeReferenceAO casts (same origins,
+// directions, tfar = R, the same Embree calls: occlusion or intersection, stream or single) from
+// the same number of threads, with the rays generated beforehand and not timed: the ceiling the
+// reference is compared against. Uses every k-th row (all rays of its covered pixels), k chosen so
+// that about maxRays rays are held in memory.
+double measureRawThroughput(const EmbreeScene& scene, const SurfaceSamples& samples, const ReferenceOptions& options,
+                            std::uint64_t maxRays = 1u << 21);
+
+// The reference's throughput set against Embree's alone on identical rays: both on the same row
+// subset (about maxRays rays), alternating runs, best of three each (other jobs share the machine).
+struct ThroughputComparison {
+  double referenceRaysPerSecond = 0.0, rawRaysPerSecond = 0.0;
+  std::uint64_t rays = 0;  // rays of the subset
+  double ratio() const { return rawRaysPerSecond > 0.0 ? referenceRaysPerSecond / rawRaysPerSecond : 0.0; }
+};
+ThroughputComparison compareThroughput(const EmbreeScene& scene, const SurfaceSamples& samples,
+                                       const ReferenceOptions& options, std::uint64_t maxRays = 1u << 21);
+
+// Every k-th row of the samples, as a smaller buffer (rows 0, k, 2k, ...): a cheaper set of
+// pixels for throughput and noise measurements.
+SurfaceSamples everyKthRow(const SurfaceSamples& samples, int k);
 
 }  // namespace aokit

@@ -88,7 +88,7 @@ EmbreeScene::EmbreeScene(Node& root, std::uint32_t mask) {
       rtcCommitGeometry(geom);
       rtcAttachGeometryByID(scene_, geom, static_cast<unsigned>(instances_.size()));
       rtcReleaseGeometry(geom);
-      instances_.push_back({mesh, gi.world});
+      instances_.push_back({mesh, gi.world, gi.geometry->albedo()});
       stats_.triangles += mesh->triangles.size();
     }
     rtcCommitScene(scene_);

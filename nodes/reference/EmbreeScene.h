@@ -33,6 +33,7 @@ class EmbreeScene {
   struct Instance {
     std::shared_ptr<const TriangleMesh> mesh;
     glm::dmat4 world{1.0};
+    glm::vec3 albedo{0.8f};  // the Geometry's (the ambient transfer reference reads it)
   };
 
   // Collects collectInstances(root, mask) and builds the BVH. Throws std::runtime_error on an

@@ -27,6 +27,7 @@ void SurfaceSamples::resize(int w, int h) {
   position.assign(pixelCount(), glm::vec3(0.0f));
   normal.assign(pixelCount(), glm::vec3(0.0f, 0.0f, 1.0f));
   covered.assign(pixelCount(), 0);
+  receives.assign(pixelCount(), 1);
 }
 
 void SurfaceSamples::validate() const {
@@ -34,6 +35,7 @@ void SurfaceSamples::validate() const {
   checkSize("SurfaceSamples::position", position.size(), pixelCount());
   checkSize("SurfaceSamples::normal", normal.size(), pixelCount());
   checkSize("SurfaceSamples::covered", covered.size(), pixelCount());
+  checkSize("SurfaceSamples::receives", receives.size(), pixelCount());
 }
 
 void AOBuffer::resize(int w, int h, bool withError) {

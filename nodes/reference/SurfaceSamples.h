@@ -10,15 +10,16 @@
 namespace aokit {
 
 // The G-buffer the AO is evaluated on: world-space surface points and unit normals (the normal
-// the renderer shades with, facing the camera). Pixels with covered == 0 hold no surface.
+// the renderer shades with, facing the camera). Pixels with covered == 0 hold no surface; covered
+// pixels with receives == 0 show a prop that receives no AO (its AO is 0 by definition).
 struct SurfaceSamples {
   int width = 0, height = 0;
   std::vector<glm::vec3> position, normal;
-  std::vector<std::uint8_t> covered;
+  std::vector<std::uint8_t> covered, receives;
 
   std::size_t pixelCount() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
-  // Sizes every vector for w x h, all pixels uncovered.
+  // Sizes every vector for w x h, all pixels uncovered (and receiving, once covered).
   void resize(int w, int h);
   // Throws std::invalid_argument when a size is negative or a vector does not hold width * height.
   void validate() const;

@@ -49,6 +49,7 @@ SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene) {
   if (!scene.scene()) throw std::logic_error("captureSurfaces: no scene");
   vtkNew<GBufferPass> gbuffer;
   std::vector<float> posVC, nrmVC;
+  std::vector<std::uint8_t> flags;
   vtkRenderer* renderer = window.renderer();
   const ShadingMode mode = scene.shadingMode();
   scene.setShadingMode(ShadingMode::Lit);  // lighting on: VTK then provides vertexVC and normals
@@ -56,7 +57,8 @@ SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene) {
     PassOverride override(scene, renderer, gbuffer);
     window.render();
     window.makeCurrent();
-    if (!gbuffer->ReadBack(posVC, nrmVC)) throw std::runtime_error("G-buffer read-back failed");
+    if (!gbuffer->ReadBack(posVC, nrmVC) || !gbuffer->ReadFlags(flags))
+      throw std::runtime_error("G-buffer read-back failed");
   }
   scene.setShadingMode(mode);
   scene.sync();  // the technique is back: let it re-attach
@@ -77,6 +79,7 @@ SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene) {
     const float* n = &nrmVC[i * 4];
     if (p[3] <= 0.5f) continue;
     s.covered[i] = 1;
+    s.receives[i] = (flags[i] & 2) != 0;  // ActorKeys.h: 1 covered + 2 receives + 4 casts
     s.position[i] = glm::vec3(toWorld * glm::dvec4(p[0], p[1], p[2], 1.0));
     s.normal[i] = glm::vec3(glm::normalize(rotToWorld * glm::dvec3(n[0], n[1], n[2])));
   }
@@ -86,22 +89,26 @@ SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene) {
 AOBuffer captureAO(OffscreenWindow& window, SceneRenderer& scene, const std::vector<std::uint8_t>& coverage) {
   const std::size_t n = static_cast<std::size_t>(window.width()) * window.height();
   if (coverage.size() != n) throw std::invalid_argument("captureAO: coverage does not match the window size");
-  const ShadingMode mode = scene.shadingMode();
-  scene.setShadingMode(ShadingMode::AOOnly);
-  scene.sync();
-  window.render();
   AOBuffer out;
   out.resize(window.width(), window.height());
   out.covered = coverage;
+  // The frame as the method renders it (a transfer method reads the lit colour as albedo); only a
+  // technique that cannot hand over its AO is rendered again ambient-only and white.
+  scene.sync();
+  window.render();
   const auto& technique = scene.scene()->technique();
   if (!(technique && technique->readAO(window.renderer(), out.ao))) {
+    const ShadingMode mode = scene.shadingMode();
+    scene.setShadingMode(ShadingMode::AOOnly);
+    scene.sync();
+    window.render();
     const RGBAImage img = window.readColor();
     for (std::size_t i = 0; i < n; ++i) out.ao[i] = 1.0f - img.pixels[i * 4] / 255.0f;
+    scene.setShadingMode(mode);
+    scene.sync();
   }
   for (std::size_t i = 0; i < n; ++i)
     if (!out.covered[i]) out.ao[i] = 0.0f;
-  scene.setShadingMode(mode);
-  scene.sync();
   return out;
 }
 

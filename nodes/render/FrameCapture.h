@@ -10,12 +10,14 @@ class OffscreenWindow;
 class SceneRenderer;
 
 // Renders the scene (no AO technique) through a GBufferPass and converts positions and normals
-// from view to world space in double precision.
+// from view to world space in double precision; receives comes from the G-buffer's flags.
 SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene);
 
-// Renders an AO-only frame (white, ambient only) with the scene's technique and returns occlusion
-// in [0,1]: the technique's own float buffer when it has one, else 1 - red channel / 255.
-// Pixels are marked covered where `coverage` says so (from captureSurfaces).
+// Renders a frame with the scene's technique, as it is shaded (capture must not change what the
+// method sees), and returns its AO in [0,1] (occlusion, or 1 - W for a transfer method) from the
+// technique's own float buffer; a technique without one is rendered again ambient-only and white,
+// and its AO read as 1 - red channel / 255. Pixels are marked covered where `coverage` says so
+// (from captureSurfaces).
 AOBuffer captureAO(OffscreenWindow& window, SceneRenderer& scene, const std::vector<std::uint8_t>& coverage);
 
 }  // namespace aokit

@@ -76,7 +76,10 @@ void OffscreenWindow::render() {
   impl_->window->Render();
 }
 
-void OffscreenWindow::finish() { glFinish(); }
+void OffscreenWindow::finish() {
+  makeCurrent();
+  glFinish();
+}
 
 RGBAImage OffscreenWindow::readColor() {
   makeCurrent();

@@ -149,7 +149,7 @@ void SceneRenderer::sync() {
 }
 
 void SceneRenderer::syncTechnique() {
-  const auto& wanted = root_->technique();
+  const auto wanted = applyTechnique_ ? root_->technique() : nullptr;
   if (wanted != attached_) {
     if (attached_) attached_->detach(renderer_);
     attached_ = wanted;

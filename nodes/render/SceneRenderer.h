@@ -38,6 +38,9 @@ class SceneRenderer {
   void setScene(AOScenePtr root);
   const AOScenePtr& scene() const { return root_; }
   void setShadingMode(ShadingMode mode);
+  // Off: the scene's technique is not installed on this renderer (a second view of the same scene
+  // for base frames, timed beside the method's). On by default.
+  void setApplyTechnique(bool on) { applyTechnique_ = on; }
   ShadingMode shadingMode() const { return mode_; }
 
   // Bring the renderer in line with the graph (call once per frame before rendering).
@@ -59,6 +62,7 @@ class SceneRenderer {
   vtkRenderer* renderer_;
   AOScenePtr root_;
   ShadingMode mode_ = ShadingMode::Lit;
+  bool applyTechnique_ = true;
   std::map<std::pair<const Geometry*, int>, std::unique_ptr<ActorEntry>> actors_;
   std::map<const TriangleMesh*, std::pair<std::weak_ptr<const TriangleMesh>, vtkSmartPointer<vtkPolyData>>> polyCache_;
   std::shared_ptr<AOTechnique> attached_;

@@ -24,6 +24,7 @@ class ObscuranceTechnique : public AOTechnique {
   std::size_t memoryBytes() const override;
   bool readAO(vtkRenderer* renderer, std::vector<float>& ao) override;
   AOQuantity quantity() const override;
+  std::optional<Falloff> falloffOverride() const override { return settings_.falloff; }
   void setStageTiming(bool on) override;
   StageTimes stageTimes() override;
 
