@@ -21,6 +21,7 @@ const std::vector<std::pair<std::string, Builder>>& registry() {
       {"corridor", [](const BuiltinOptions&) { return makeCorridorScene(); }},
       {"room", [](const BuiltinOptions&) { return makeRoomScene(0.85f); }},
       {"room-dark", [](const BuiltinOptions&) { return makeRoomScene(0.15f); }},
+      {"open-box", [](const BuiltinOptions&) { return makeOpenBoxScene(); }},
       {"animated", [](const BuiltinOptions&) { return makeAnimatedScene(); }},
       {"bunny", [](const BuiltinOptions& o) { return makePackagedMeshScene("bunny", o.modelsDir); }},
       {"fandisk", [](const BuiltinOptions& o) { return makePackagedMeshScene("fandisk", o.modelsDir); }},
