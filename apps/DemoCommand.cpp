@@ -9,8 +9,8 @@
 #include "methods/MethodRegistry.h"
 #include "output/AtomicFile.h"
 #include "output/ImageFiles.h"
-#include "render/FrameCapture.h"
-#include "render/SceneView.h"
+#include "headless/FrameCapture.h"
+#include "headless/SceneView.h"
 
 namespace aokit::cli {
 

@@ -10,7 +10,7 @@
 #include "io/SceneFile.h"
 #include "methods/MethodRegistry.h"
 #include "reference/Falloff.h"
-#include "render/OffscreenWindow.h"
+#include "headless/OffscreenWindow.h"
 #include "scenes/BuiltinScenes.h"
 
 namespace aokit::cli {

@@ -9,8 +9,8 @@
 #include "reference/EmbreeScene.h"
 #include "reference/Falloff.h"
 #include "reference/Metrics.h"
-#include "render/FrameCapture.h"
-#include "render/SceneView.h"
+#include "headless/FrameCapture.h"
+#include "headless/SceneView.h"
 
 namespace aokit::cli {
 

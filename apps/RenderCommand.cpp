@@ -5,8 +5,8 @@
 #include "Options.h"
 #include "methods/MethodRegistry.h"
 #include "output/ImageFiles.h"
-#include "render/FrameCapture.h"
-#include "render/SceneView.h"
+#include "headless/FrameCapture.h"
+#include "headless/SceneView.h"
 
 namespace aokit::cli {
 

@@ -15,8 +15,8 @@
 #include "reference/EmbreeScene.h"
 #include "reference/Metrics.h"
 #include "reference/PrimarySamples.h"
-#include "render/FrameCapture.h"
-#include "render/SceneView.h"
+#include "headless/FrameCapture.h"
+#include "headless/SceneView.h"
 #include "scenes/BuiltinScenes.h"
 #include "scenes/Shapes.h"
 

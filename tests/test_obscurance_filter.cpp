@@ -14,7 +14,7 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
-#include "render/OffscreenWindow.h"
+#include "headless/OffscreenWindow.h"
 #include "screen/InterleavePattern.h"
 #include "screen/ObscuranceFilter.h"
 #include "render/FullScreenStage.h"

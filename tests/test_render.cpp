@@ -11,10 +11,10 @@
 #include "core/Geometry.h"
 #include "core/Scene.h"
 #include "core/Transform.h"
-#include "render/FrameCapture.h"
-#include "render/OffscreenWindow.h"
+#include "headless/FrameCapture.h"
+#include "headless/OffscreenWindow.h"
 #include "render/SceneRenderer.h"
-#include "render/SceneView.h"
+#include "headless/SceneView.h"
 
 using namespace aokit;
 

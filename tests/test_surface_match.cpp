@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "bench/SurfaceMatch.h"
-#include "render/FrameCapture.h"
-#include "render/SceneView.h"
+#include "headless/FrameCapture.h"
+#include "headless/SceneView.h"
 #include "scenes/BuiltinScenes.h"
 
 using namespace aokit;

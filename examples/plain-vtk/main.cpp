@@ -12,7 +12,7 @@
 #include <vtkSphereSource.h>
 
 #include <render/GBufferPass.h>
-#include <render/OffscreenWindow.h>
+#include <headless/OffscreenWindow.h>
 
 int main() {
   aokit::OffscreenWindow window(320, 240);  // OSMesa context + vtkGenericOpenGLRenderWindow

@@ -12,8 +12,8 @@
 #include "methods/MethodRegistry.h"
 #include "reference/Falloff.h"
 #include "reference/Metrics.h"
-#include "render/FrameCapture.h"
-#include "render/SceneView.h"
+#include "headless/FrameCapture.h"
+#include "headless/SceneView.h"
 #include "render/StageTimer.h"
 
 namespace aokit {

@@ -21,7 +21,7 @@
 
 #include "methods/MethodRegistry.h"
 #include "output/ImageFiles.h"
-#include "render/OffscreenWindow.h"
+#include "headless/OffscreenWindow.h"
 
 namespace aokit {
 

@@ -12,8 +12,8 @@
 #include "reference/AOReference.h"
 #include "reference/EmbreeScene.h"
 #include "reference/Metrics.h"
-#include "render/FrameCapture.h"
-#include "render/SceneView.h"
+#include "headless/FrameCapture.h"
+#include "headless/SceneView.h"
 
 namespace aokit {
 

@@ -1,4 +1,4 @@
-#include "render/OffscreenWindow.h"
+#include "headless/OffscreenWindow.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -10,7 +10,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtk_glew.h>
 
-#include "render/OSMesaContext.h"
+#include "headless/OSMesaContext.h"
 
 namespace aokit {
 

@@ -2,7 +2,7 @@
 // A scene bound to a headless window: the offscreen window, a renderer synced to the graph, and
 // the scene's camera applied. Where every command and bench starts.
 #include "core/Scene.h"
-#include "render/OffscreenWindow.h"
+#include "headless/OffscreenWindow.h"
 #include "render/SceneRenderer.h"
 
 namespace aokit {

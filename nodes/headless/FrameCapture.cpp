@@ -1,4 +1,4 @@
-#include "render/FrameCapture.h"
+#include "headless/FrameCapture.h"
 
 #include <stdexcept>
 
@@ -11,7 +11,7 @@
 
 #include "core/AOScene.h"
 #include "render/GBufferPass.h"
-#include "render/OffscreenWindow.h"
+#include "headless/OffscreenWindow.h"
 #include "render/SceneRenderer.h"
 
 namespace aokit {

@@ -1,4 +1,4 @@
-#include "render/OSMesaContext.h"
+#include "headless/OSMesaContext.h"
 
 #include <GL/osmesa.h>
 
