@@ -146,7 +146,7 @@ TEST(HybridSettings, BadValuesGiveOneLineErrorsNamingTheField) {
   expectError(s, "rays must be in 1..256, got 0");
   s = {};
   s.steps = 0;
-  expectError(s, "steps must be in 1..128, got 0");
+  expectError(s, "steps must be in 1..256, got 0");
   s = {};
   s.gridResolution = 1024;  // 128 MiB > 64 MiB default budget
   expectError(s, "a 1024^3 grid needs 128 MiB, over the memory budget of 64 MiB");

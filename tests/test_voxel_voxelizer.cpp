@@ -16,6 +16,7 @@
 #include "scenes/SceneBuilding.h"
 #include "scenes/Shapes.h"
 #include "voxel/CpuVoxelizer.h"
+#include "voxel/SolidVoxelizer.h"
 #include "voxel/TriangleBoxOverlap.h"
 
 using namespace aokit;
@@ -264,5 +265,55 @@ TEST(CpuVoxelizer, RoomWallsAreNotLost) {
     EXPECT_EQ(three.minCoverage, 1.0) << res;
     EXPECT_EQ(three.leak, 0.0) << res;
     EXPECT_LT(centre.minCoverage, 0.2) << res;  // the seed's failure case, seen by this test
+  }
+}
+
+TEST(SolidVoxelizer, WatertightMeshes) {
+  EXPECT_TRUE(isWatertight(*makeUVSphere(1.0, 32, 16)));
+  EXPECT_TRUE(isWatertight(*makeBox({1.0, 2.0, 3.0})));
+  EXPECT_TRUE(isWatertight(*makeCylinder(0.5, 1.0, 24)));
+  EXPECT_FALSE(isWatertight(*makeGridPlane(1.0, 1.0, 4, 4)));
+  auto open = std::make_shared<TriangleMesh>(*makeBox({1.0, 1.0, 1.0}));
+  open->triangles.pop_back();  // a hole
+  EXPECT_FALSE(isWatertight(*open));
+  auto flipped = std::make_shared<TriangleMesh>(*makeBox({1.0, 1.0, 1.0}));
+  std::swap(flipped->triangles[0].y, flipped->triangles[0].z);  // one face turned inside out
+  EXPECT_FALSE(isWatertight(*flipped));
+  if (bunnyPresent())
+    std::cout << "bunny00.off watertight: "
+              << isWatertight(loadMesh(std::string(AOKIT_MODELS_DIR) + "/packaged/bunny00.off")) << "\n";
+}
+
+// The parity fill sets exactly the voxels whose centres are inside the closed surface: against the
+// analytic inside test of a box (exact) and a finely tessellated sphere (up to the tessellation).
+TEST(SolidVoxelizer, ParityFillsVoxelCentresInside) {
+  Bounds region;
+  region.extend(glm::dvec3(-1.3, -1.1, -1.2));
+  region.extend(glm::dvec3(1.25, 1.3, 1.15));
+  for (bool rotated : {false, true}) {
+    const VoxelFrame f = VoxelFrame::fitting(region, 64, rotated ? randomRotation(5) : glm::dmat3(1.0));
+    const glm::dmat4 boxPlace = translation({0.05, -0.1, 0.02}) * rotation(17.0, {1, 1, 0});
+    VoxelGrid box(f.dims), sphere(f.dims);
+    fillSolidParity(box, f, *makeBox({1.6, 1.2, 0.9}), boxPlace);
+    fillSolidParity(sphere, f, *makeUVSphere(1.0, 256, 128), glm::dmat4(1.0));
+    const glm::dmat4 toBox = glm::inverse(boxPlace);
+    std::size_t boxWrong = 0, sphereWrong = 0, sphereInside = 0, boxInside = 0;
+    for (int k = 0; k < f.dims.z; ++k)
+      for (int j = 0; j < f.dims.y; ++j)
+        for (int i = 0; i < f.dims.x; ++i) {
+          const glm::dvec3 w = f.toWorld(glm::dvec3(i, j, k) + 0.5);
+          const glm::dvec3 l(toBox * glm::dvec4(w, 1.0));
+          const bool inBox = std::abs(l.x) < 0.8 && std::abs(l.y) < 0.6 && std::abs(l.z) < 0.45;
+          boxInside += inBox;
+          boxWrong += inBox != box.get(i, j, k);
+          const double r = glm::length(w);
+          sphereInside += r < 1.0;
+          // The tessellation lies within 1e-4 of the unit sphere: only such centres may differ.
+          if (std::abs(r - 1.0) > 2e-4) sphereWrong += (r < 1.0) != sphere.get(i, j, k);
+        }
+    EXPECT_GT(boxInside, 1000u);
+    EXPECT_GT(sphereInside, 10000u);
+    EXPECT_EQ(boxWrong, 0u) << "rotated " << rotated;
+    EXPECT_EQ(sphereWrong, 0u) << "rotated " << rotated;
   }
 }

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/Geometry.h"
+#include "voxel/ColumnRaster.h"
+#include "voxel/SolidVoxelizer.h"
 #include "voxel/TriangleBoxOverlap.h"
 
 namespace aokit {
@@ -52,25 +55,7 @@ void walkConservative(const glm::ivec3& dims, const glm::dvec3& a, const glm::dv
 }
 
 void columnCentre(VoxelGrid& grid, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-  const glm::ivec3& dims = grid.dims();
-  const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);  // twice the signed area
-  if (area == 0.0) return;  // parallel to the viewing direction: no fragment
-  // Columns whose centre can lie in the triangle's bounding box.
-  const int i0 = std::max(0, floorInt(std::min({a.x, b.x, c.x}) - 0.5));
-  const int i1 = std::min(dims.x - 1, floorInt(std::max({a.x, b.x, c.x}) - 0.5));
-  const int j0 = std::max(0, floorInt(std::min({a.y, b.y, c.y}) - 0.5));
-  const int j1 = std::min(dims.y - 1, floorInt(std::max({a.y, b.y, c.y}) - 0.5));
-  auto edge = [](const glm::dvec3& p, const glm::dvec3& q, double x, double y) {
-    return (q.x - p.x) * (y - p.y) - (q.y - p.y) * (x - p.x);
-  };
-  for (int j = j0; j <= j1; ++j)
-    for (int i = i0; i <= i1; ++i) {
-      const double x = i + 0.5, y = j + 0.5;
-      // Barycentric weights of the column centre; inside (edges included) when all share the sign.
-      const double wa = edge(b, c, x, y) / area, wb = edge(c, a, x, y) / area, wc = edge(a, b, x, y) / area;
-      if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
-      grid.set(i, j, floorInt(wa * a.z + wb * b.z + wc * c.z));
-    }
+  rasterizeColumnCentres(grid.dims(), a, b, c, [&](int i, int j, double z) { grid.set(i, j, floorInt(z)); });
 }
 
 }  // namespace
@@ -115,13 +100,26 @@ void voxelizeMesh(VoxelGrid& grid, const VoxelFrame& frame, const TriangleMesh& 
 }
 
 VoxelGrid voxelizeInstances(const std::vector<GeometryInstance>& instances, const VoxelFrame& frame,
-                            VoxelizeMethod method, const std::function<void(double)>& progress) {
-  VoxelGrid grid(frame.dims);
+                            VoxelizeMethod method, bool solid, const std::function<void(double)>& progress) {
+  VoxelGrid grid(frame.dims), parity;
+  std::map<const TriangleMesh*, bool> closed;  // meshes are shared between instances
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const auto& inst = instances[i];
-    if (inst.geometry && inst.geometry->mesh()) voxelizeMesh(grid, frame, *inst.geometry->mesh(), inst.world, method);
+    if (inst.geometry && inst.geometry->mesh()) {
+      const TriangleMesh& mesh = *inst.geometry->mesh();
+      voxelizeMesh(grid, frame, mesh, inst.world, method);
+      if (solid) {
+        auto it = closed.find(&mesh);
+        if (it == closed.end()) it = closed.emplace(&mesh, isWatertight(mesh)).first;
+        if (it->second) {
+          if (parity.dims() != frame.dims) parity = VoxelGrid(frame.dims);
+          fillSolidParity(parity, frame, mesh, inst.world);
+        }
+      }
+    }
     if (progress) progress(static_cast<double>(i + 1) / instances.size());
   }
+  if (parity.dims() == frame.dims) grid.merge(parity);
   return grid;
 }
 

@@ -38,9 +38,11 @@ void voxelizeTriangle(VoxelGrid& grid, const glm::dvec3& a, const glm::dvec3& b,
 void voxelizeMesh(VoxelGrid& grid, const VoxelFrame& frame, const TriangleMesh& mesh, const glm::dmat4& world,
                   VoxelizeMethod method);
 
-// A grid of frame.dims holding every instance (those without a mesh are skipped). `progress`, if
-// given, gets the fraction of instances done and may throw to cancel.
+// A grid of frame.dims holding every instance (those without a mesh are skipped). With `solid`,
+// the insides of watertight meshes are filled too (SolidVoxelizer.h: one parity grid for all of
+// them, ORed in). `progress`, if given, gets the fraction of instances done and may throw to cancel.
 VoxelGrid voxelizeInstances(const std::vector<GeometryInstance>& instances, const VoxelFrame& frame,
-                            VoxelizeMethod method, const std::function<void(double)>& progress = {});
+                            VoxelizeMethod method, bool solid = false,
+                            const std::function<void(double)>& progress = {});
 
 }  // namespace aokit

@@ -1,5 +1,6 @@
 #include "voxel/HybridMarch.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -13,7 +14,8 @@ std::string HybridMarchConstants::defines() const {
   std::ostringstream d;
   d << "#define HAO_RAYS " << rays << "\n"
     << "#define HAO_STEPS " << steps << "\n"
-    << "#define HAO_FALLOFF " << static_cast<int>(falloff) << "\n";
+    << "#define HAO_FALLOFF " << static_cast<int>(falloff) << "\n"
+    << "#define HAO_SPAN_TEST " << int(spanTest) << "\n";
   return d.str();
 }
 
@@ -29,6 +31,7 @@ HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, double sc
   c.rays = s.rays;
   c.steps = s.steps;
   c.falloff = s.falloff.value_or(sceneFalloff);
+  c.spanTest = s.spanTest;
   c.radius = static_cast<float>(R);
   c.cosMax = static_cast<float>(std::max(0.0, std::cos(s.spread * 1.5707963267948966)));
   if (s.spread >= 1.0) c.cosMax = 0.0f;
@@ -54,14 +57,19 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
     const glm::vec3 dir = m3 * (local.x * t + local.y * b + local.z * n);
     const float offset = hybridStepOffset(i, jitter.z);
     float k = 0.0f;
+    int previousK = static_cast<int>(std::floor(origin.z));
     for (int j = 0; j < c.steps; ++j) {
       const float dist = (static_cast<float>(j) + offset) * stepLength;
       const glm::vec3 g = origin + dist * dir;
-      if (grid.get(static_cast<int>(std::floor(g.x)), static_cast<int>(std::floor(g.y)),
-                   static_cast<int>(std::floor(g.z)))) {
+      const int gi = static_cast<int>(std::floor(g.x)), gj = static_cast<int>(std::floor(g.y));
+      const int gk = static_cast<int>(std::floor(g.z));
+      const bool hit = c.spanTest ? grid.anyInRun(gi, gj, std::min(previousK, gk), std::max(previousK, gk))
+                                  : grid.get(gi, gj, gk);
+      if (hit) {
         k = hybridFalloff(c.falloff, dist, c.radius);
         break;  // the GPU keeps stepping (no branch) but adds only the first hit
       }
+      previousK = gk;
     }
     sum += k * local.z;
     weights += local.z;

@@ -1,8 +1,10 @@
 #pragma once
 // The Hybrid AO estimator on the CPU, step for step as the GPU march shader: the oracle for
 // GPU-vs-CPU tests and the tool that charts convergence to the reference (HybridSampling.h has the
-// formulas). A step looks up the voxel floor(M * (origin + t dir)) with M the float world-to-grid
-// matrix; outside the grid reads as empty.
+// formulas). Step j of a ray reaches g_j = M (origin + t_j dir) (M the float world-to-grid
+// matrix, g_-1 = M origin) and tests column (floor g_j.x, floor g_j.y): with the span test every
+// voxel k in [min, max] of (floor g_{j-1}.z, floor g_j.z), else only k = floor g_j.z. Outside the
+// grid reads as empty.
 #include <cstdint>
 #include <string>
 
@@ -21,6 +23,7 @@ struct HybridMarchConstants {
   int rays = 32;                      // #define HAO_RAYS
   int steps = 8;                      // #define HAO_STEPS
   Falloff falloff = Falloff::Binary;  // #define HAO_FALLOFF (0 binary, 1 wendland, 2 sqrt, 3 exponential)
+  bool spanTest = true;               // #define HAO_SPAN_TEST
   float radius = 1.0f;                // world units
   float cosMax = 0.0f;                // cos of the cone half-angle: cos(spread * 90 deg), >= 0
   float normalOffset = 0.0f;          // world units

@@ -46,7 +46,7 @@ void validate(const HybridSettings& s) {
   }
   if (!inRange(s.regionBudget, 4.0, 1024.0)) fail("regionBudget", "in 4..1024 (units of R)", s.regionBudget);
   if (s.rays < 1 || s.rays > 256) fail("rays", "in 1..256", s.rays);
-  if (s.steps < 1 || s.steps > 128) fail("steps", "in 1..128", s.steps);
+  if (s.steps < 1 || s.steps > 256) fail("steps", "in 1..256", s.steps);
   if (s.scale != AOMapScale::Half && s.scale != AOMapScale::Quarter)
     fail("scale", "2 (half) or 4 (quarter)", static_cast<int>(s.scale));
   if (!inOpenClosed(s.spread, 0.0, 1.0)) fail("spread", "in (0, 1] (a fraction of 90 degrees)", s.spread);

@@ -32,13 +32,20 @@ struct HybridSettings {
   double memoryBudgetMiB = 64.0;    //!< MiB the grid may hold, (0, 4096]; 512^3 = 16 MiB, 1024^3 = 128 MiB
   VoxelizingFrame frame = VoxelizingFrame::ThreeAxis;
   std::uint32_t frameSeed = 1;      //!< Rotated: seed of the random rotation (e.g. the frame number)
+  bool solid = true;                //!< fill the inside of watertight casters (parity, SolidVoxelizer.h)
+                                    //!<   so that long steps cannot pass through a hollow shell
   RegionMode region = RegionMode::Auto;
   Bounds regionBox;                 //!< world units; Box mode only: a valid box of positive volume
   double regionBudget = 64.0;       //!< longest side of the auto region, in units of R, 4..1024
 
   // AO sampling (eq. 4).
   int rays = 32;                    //!< rays per AO-map pixel, 1..256 (seed Table 1: 32)
-  int steps = 8;                    //!< grid tests per ray, evenly spaced over R, 1..128 (seed: 8)
+  int steps = 8;                    //!< grid tests per ray, evenly spaced over R, 1..256 (seed: 8)
+  bool spanTest = true;             //!< each step tests the voxels between the previous sample and
+                                    //!<   this one along the grid's depth axis, in this sample's
+                                    //!<   column (one texel of the packed grid): sheets across that
+                                    //!<   axis (floors, table tops) are not stepped over; false =
+                                    //!<   the seed's single voxel per step
   AOMapScale scale = AOMapScale::Half;
   double spread = 1.0;              //!< cone half-angle as a fraction of 90 degrees, (0, 1]; 1 = the
                                     //!<   whole hemisphere (what the reference integrates); the
@@ -46,7 +53,8 @@ struct HybridSettings {
   double radius = 0.0;              //!< world units, >= 0; 0 = the scene's AO radius R
   std::optional<Falloff> falloff;   //!< weight k(d) of reference/Falloff.h; empty = the scene's
                                     //!<   (the seed uses Wendland)
-  double normalOffset = 1.0;        //!< ray origins lifted along the normal, in voxels, 0..4
+  double normalOffset = 2.0;        //!< ray origins lifted along the normal, in voxels, 0..4; below
+                                    //!<   sqrt(3) the origin's own voxel can hold the surface
   double jitterCell = 0.25;         //!< cell of the object-space jitter noise, in voxels, (0, 16]
   std::uint32_t jitterSeed = 0;     //!< any value; changes the noise pattern
 

@@ -17,19 +17,42 @@ VoxelGrid::VoxelGrid(const glm::ivec3& dims) : dims_(dims) {
   words_.assign(static_cast<std::size_t>(dims.x) * dims.y * slabs_ * 4, 0u);
 }
 
-void VoxelGrid::setRun(int i, int j, int k0, int k1) {
-  if (i < 0 || j < 0 || i >= dims_.x || j >= dims_.y) return;
+namespace {
+// Calls apply(word, mask) for the words of column (i, j) that voxels k0..k1 touch.
+template <typename Apply>
+void forRun(const VoxelGrid& g, int i, int j, int k0, int k1, Apply&& apply) {
+  const glm::ivec3& d = g.dims();
+  if (i < 0 || j < 0 || i >= d.x || j >= d.y) return;
   k0 = std::max(k0, 0);
-  k1 = std::min(k1, dims_.z - 1);
+  k1 = std::min(k1, d.z - 1);
   for (int k = k0; k <= k1;) {
     // Whole 32-bit words at a time: a run is one mask per channel it touches.
-    const VoxelAddress a = address(i, j, k);
+    const VoxelAddress a = g.address(i, j, k);
     const int last = std::min(k1, (k | 31));
     const int n = last - k + 1;
-    const std::uint32_t mask = (n == 32 ? ~0u : ((1u << n) - 1u)) << a.bit;
-    words_[a.word] |= mask;
+    apply(a.word, (n == 32 ? ~0u : ((1u << n) - 1u)) << a.bit);
     k = last + 1;
   }
+}
+}  // namespace
+
+bool VoxelGrid::anyInRun(int i, int j, int k0, int k1) const {
+  bool any = false;
+  forRun(*this, i, j, k0, k1, [&](std::size_t w, std::uint32_t m) { any = any || (words_[w] & m) != 0u; });
+  return any;
+}
+
+void VoxelGrid::setRun(int i, int j, int k0, int k1) {
+  forRun(*this, i, j, k0, k1, [&](std::size_t w, std::uint32_t m) { words_[w] |= m; });
+}
+
+void VoxelGrid::flipRun(int i, int j, int k0, int k1) {
+  forRun(*this, i, j, k0, k1, [&](std::size_t w, std::uint32_t m) { words_[w] ^= m; });
+}
+
+void VoxelGrid::merge(const VoxelGrid& other) {
+  if (other.dims_ != dims_) throw std::invalid_argument("voxel grids of different dimensions");
+  for (std::size_t w = 0; w < words_.size(); ++w) words_[w] |= other.words_[w];
 }
 
 void VoxelGrid::clear() { std::fill(words_.begin(), words_.end(), 0u); }

@@ -63,8 +63,14 @@ class VoxelGrid {
     const VoxelAddress a = address(i, j, k);
     words_[a.word] |= 1u << a.bit;
   }
+  // Is any of voxels k0..k1 (inclusive, clamped) of column (i, j) set? False outside the grid.
+  bool anyInRun(int i, int j, int k0, int k1) const;
   // Sets voxels k0..k1 (inclusive, clamped to the grid) of column (i, j).
   void setRun(int i, int j, int k0, int k1);
+  // Flips (XOR) voxels k0..k1 of column (i, j), clamped: the parity fill's fragment.
+  void flipRun(int i, int j, int k0, int k1);
+  // this |= other (equal dims; throws otherwise).
+  void merge(const VoxelGrid& other);
   void clear();
 
   std::size_t count() const;  // set voxels
