@@ -61,7 +61,9 @@ struct HybridSettings {
   // Joint bilateral upsampling (eqs. 5-8). Every kernel is the Wendland w(t, h) of eq. 3; its
   // support h plays the role of a Gaussian's sigma.
   int filterSize = 16;              //!< m: window side in full-resolution pixels, 0..64; 0 = off
-  double normalSupport = 2.0;       //!< h of w_n over 1 - <n(x), n(y)>, (0, 2] (seed: 2)
+                                    //!<   (seed: 16 at half resolution; keep about 8 x scale)
+  double normalSupport = 1.0;       //!< h of w_n over 1 - <n(x), n(y)>, (0, 2]; 1 gives creases of
+                                    //!<   90 degrees no weight (the seed's 2 still gives them 0.19)
   double positionSupport = 1.0;     //!< h of w_p over |p(x) - p(y)|, in units of R, (0, 4] (seed: 1)
   double aoSupport = 1.0;           //!< h of w_h over |h'(x) - h'(y)|, AO units, (0, 1] (seed: 1)
 };
