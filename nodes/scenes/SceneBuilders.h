@@ -15,6 +15,8 @@ Scene makeTankScene();
 Scene makeCorridorScene();
 Scene makeRoomScene(float albedo);
 Scene makeAnimatedScene();
+Scene makeHiddenScene();
+Scene makeBehindScene();
 // "bunny" or "fandisk": a packaged mesh stood on a ground plane.
 Scene makePackagedMeshScene(const std::string& name, const std::string& modelsDir);
 
