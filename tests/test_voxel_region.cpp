@@ -72,6 +72,7 @@ TEST(VoxelRegion, KeepsOccludersWithinROfTheFrustumOnly) {
   ASSERT_GT(4.9, 5.5 * tx);
   ASSERT_LT((4.9 - 5.5 * tx) / std::sqrt(1 + tx * tx), R);
   HybridSettings s;
+  s.snapToLattice = false;  // voxel size exactly longest side / resolution
   const VoxelRegion r = computeVoxelRegion(casters, f, R, s);
   ASSERT_FALSE(r.empty);
   EXPECT_EQ(r.casters, (std::vector<std::size_t>{0, 1, 3}));
@@ -128,6 +129,7 @@ TEST(VoxelRegion, BudgetCutsTheFarFieldAndKeepsTheNearOne) {
 TEST(VoxelRegion, FixedBoxAndEmptyCases) {
   const ViewFrustum f = frontView();
   HybridSettings s;
+  s.snapToLattice = false;
   s.region = RegionMode::Box;
   s.regionBox = box({-2, 2, -2}, {2, 6, 2});
   const std::vector<Bounds> casters = {box({-1, 4, -1}, {1, 5, 1}), box({10, 10, 10}, {11, 11, 11}), Bounds{}};
@@ -155,4 +157,26 @@ TEST(VoxelRegion, SphereOffscreenKeepsTheSphere) {
   ASSERT_EQ(r.casters.size(), 2u);
   EXPECT_TRUE(contains(r.box, bounds[1]));  // the sphere, out of view
   EXPECT_LT(longest(r.box), 8.0 + 1e-9);
+}
+
+// On the lattice, a region that moves a little keeps every voxel where it was: the grid origins
+// differ by whole voxels and the voxel size is the same.
+TEST(VoxelRegion, LatticeKeepsVoxelsWhenTheRegionMoves) {
+  const Bounds a = box({-1.03, 0.51, -0.2}, {2.97, 4.49, 1.3});
+  const Bounds b = box({-0.98, 0.55, -0.21}, {3.05, 4.52, 1.31});
+  const VoxelFrame fa = VoxelFrame::onLattice(a, 256), fb = VoxelFrame::onLattice(b, 256);
+  EXPECT_EQ(fa.voxelSize, fb.voxelSize);
+  const glm::dvec3 shift = (fb.origin - fa.origin) / fa.voxelSize;
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(shift[k], std::round(shift[k]), 1e-9);
+  // Round coordinates sit mid-voxel: z = 0 is half a voxel above a voxel boundary.
+  const double zeroInGrid = fa.toGrid(glm::dvec3(0.0)).z;
+  EXPECT_NEAR(zeroInGrid - std::floor(zeroInGrid), 0.5, 1e-9);
+  EXPECT_GE(fa.voxelSize, 4.0 / 254);
+  EXPECT_LT(fa.voxelSize, 1.0905 * 4.0 / 254);  // at most one 2^(1/8) step above
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_LE(fa.dims[k], 256);
+    EXPECT_LE(fa.origin[k], a.min[k]);
+    EXPECT_GE(fa.origin[k] + fa.dims[k] * fa.voxelSize, a.max[k]);
+  }
+  EXPECT_EQ(std::log2(fa.voxelSize) * 8, std::round(std::log2(fa.voxelSize) * 8));
 }

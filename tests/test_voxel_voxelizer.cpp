@@ -128,6 +128,8 @@ TEST(CpuVoxelizer, MethodsKeepTheirSetRelationsOnRandomTriangles) {
     voxelizeTriangle(exact, a, b, c, VoxelizeMethod::Exact);
     voxelizeTriangle(three, a, b, c, VoxelizeMethod::ThreeAxis);
     voxelizeTriangle(centre, a, b, c, VoxelizeMethod::ColumnCentre);
+    VoxelGrid dominant(dims);
+    voxelizeTriangle(dominant, a, b, c, VoxelizeMethod::DominantCentre);
     for (int k = 0; k < 16; ++k)
       for (int j = 0; j < 16; ++j)
         for (int i = 0; i < 16; ++i)
@@ -135,6 +137,7 @@ TEST(CpuVoxelizer, MethodsKeepTheirSetRelationsOnRandomTriangles) {
     ASSERT_EQ(exact.words(), brute.words()) << "the candidate walk missed a voxel, triangle " << n;
     ASSERT_EQ(intersectionCount(exact, three), exact.count()) << "ThreeAxis must contain Exact, triangle " << n;
     ASSERT_EQ(intersectionCount(centre, exact), centre.count()) << "ColumnCentre must lie in Exact, triangle " << n;
+    ASSERT_EQ(intersectionCount(dominant, exact), dominant.count()) << "DominantCentre must lie in Exact, triangle " << n;
   }
 }
 
@@ -162,7 +165,7 @@ TEST(CpuVoxelizer, IntersectionOverUnionAgainstExact) {
     std::cout << "bunny skipped: run models/fetch-meshes.sh\n";
   }
   std::cout << "IoU against the exact (SAT) voxelization in the same frame\n"
-            << "shape        res  three-axis  column-centre(axis-aligned)  column-centre(rotated, 3 seeds)\n";
+            << "shape        res  three-axis  dominant-centre  column-centre(axis-aligned)  column-centre(rotated, 3 seeds)\n";
   for (const Shape& s : shapes)
     for (int res : {64, 128, 256}) {
       const Bounds region = paddedRegion(s, res);
@@ -170,6 +173,7 @@ TEST(CpuVoxelizer, IntersectionOverUnionAgainstExact) {
       const VoxelGrid exact = voxelizeShape(s, aligned, VoxelizeMethod::Exact);
       const double three = intersectionOverUnion(voxelizeShape(s, aligned, VoxelizeMethod::ThreeAxis), exact);
       const double centre = intersectionOverUnion(voxelizeShape(s, aligned, VoxelizeMethod::ColumnCentre), exact);
+      const double dominant = intersectionOverUnion(voxelizeShape(s, aligned, VoxelizeMethod::DominantCentre), exact);
       double rotated = 0.0;
       for (std::uint32_t seed : {1u, 2u, 3u}) {
         const VoxelFrame f = frameFor(region, res, true, seed);
@@ -177,7 +181,8 @@ TEST(CpuVoxelizer, IntersectionOverUnionAgainstExact) {
                                          voxelizeShape(s, f, VoxelizeMethod::Exact)) / 3.0;
       }
       std::cout << std::left << std::setw(12) << s.name << std::right << std::setw(5) << res << std::fixed
-                << std::setprecision(3) << std::setw(12) << three << std::setw(29) << centre << std::setw(33)
+                << std::setprecision(3) << std::setw(12) << three << std::setw(17) << dominant << std::setw(29) << centre
+                << std::setw(33)
                 << rotated << "\n";
       EXPECT_GE(three, 0.95) << s.name << " at " << res;  // the recommended default
     }
@@ -248,14 +253,16 @@ TEST(CpuVoxelizer, RoomWallsAreNotLost) {
   region.min -= glm::dvec3(0.013);
   region.max += glm::dvec3(0.017);
   std::cout << "room: worst wall coverage (fraction of its exact voxels) / lines leaking out of the room\n"
-            << "res  voxel   three-axis        column-centre     column-centre rotated (seeds 1-3)\n";
+            << "res  voxel   three-axis        dominant-centre   column-centre     column-centre rotated (seeds 1-3)\n";
   for (int res : {64, 128, 256}) {
     const VoxelFrame aligned = VoxelFrame::fitting(region, res);
     const WallReport three = roomWalls(room, aligned, VoxelizeMethod::ThreeAxis);
     const WallReport centre = roomWalls(room, aligned, VoxelizeMethod::ColumnCentre);
+    const WallReport dominant = roomWalls(room, aligned, VoxelizeMethod::DominantCentre);
     std::cout << std::setw(4) << res << std::fixed << std::setprecision(4) << std::setw(7) << aligned.voxelSize
               << std::setprecision(3) << "   " << three.minCoverage << " / " << three.leak << "     "
-              << centre.minCoverage << " / " << centre.leak << "    ";
+              << dominant.minCoverage << " / " << dominant.leak << "     " << centre.minCoverage << " / "
+              << centre.leak << "    ";
     for (std::uint32_t seed : {1u, 2u, 3u}) {
       const WallReport rot = roomWalls(room, VoxelFrame::fitting(region, res, randomRotation(seed)),
                                        VoxelizeMethod::ColumnCentre);
@@ -264,6 +271,7 @@ TEST(CpuVoxelizer, RoomWallsAreNotLost) {
     std::cout << "\n";
     EXPECT_EQ(three.minCoverage, 1.0) << res;
     EXPECT_EQ(three.leak, 0.0) << res;
+    EXPECT_EQ(dominant.leak, 0.0) << res;  // thin, but 26-connected: no line crosses unseen
     EXPECT_LT(centre.minCoverage, 0.2) << res;  // the seed's failure case, seen by this test
   }
 }

@@ -58,6 +58,22 @@ void columnCentre(VoxelGrid& grid, const glm::dvec3& a, const glm::dvec3& b, con
   rasterizeColumnCentres(grid.dims(), a, b, c, [&](int i, int j, double z) { grid.set(i, j, floorInt(z)); });
 }
 
+// ColumnCentre along the triangle's dominant axis d: swizzle d to z, rasterize, swizzle back.
+void dominantCentre(VoxelGrid& grid, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const glm::dvec3 n = glm::abs(glm::cross(b - a, c - a));
+  const int d = (n.x >= n.y && n.x >= n.z) ? 0 : (n.y >= n.z ? 1 : 2);
+  const int u = (d + 1) % 3, v = (d + 2) % 3;
+  auto swizzle = [&](const glm::dvec3& p) { return glm::dvec3(p[u], p[v], p[d]); };
+  const glm::ivec3 dims(grid.dims()[u], grid.dims()[v], grid.dims()[d]);
+  rasterizeColumnCentres(dims, swizzle(a), swizzle(b), swizzle(c), [&](int i, int j, double z) {
+    glm::ivec3 voxel;
+    voxel[u] = i;
+    voxel[v] = j;
+    voxel[d] = floorInt(z);
+    grid.set(voxel.x, voxel.y, voxel.z);
+  });
+}
+
 }  // namespace
 
 void voxelizeTriangle(VoxelGrid& grid, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
@@ -65,6 +81,9 @@ void voxelizeTriangle(VoxelGrid& grid, const glm::dvec3& a, const glm::dvec3& b,
   switch (method) {
     case VoxelizeMethod::ColumnCentre:
       columnCentre(grid, a, b, c);
+      return;
+    case VoxelizeMethod::DominantCentre:
+      dominantCentre(grid, a, b, c);
       return;
     case VoxelizeMethod::ThreeAxis:
       walkConservative(grid.dims(), a, b, c, [&](const glm::ivec3& v, int d, int kLo, int kHi) {

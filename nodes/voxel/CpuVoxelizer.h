@@ -13,6 +13,10 @@
 //                 z axis; a column (i, j) whose centre (i + .5, j + .5) lies in the projected triangle
 //                 gets the one voxel k = floor(z) at the triangle's depth there. Triangles parallel to
 //                 z have no footprint and are lost, hence the seed's randomly rotated frame.
+//   DominantCentre  ColumnCentre along each triangle's dominant axis (the usual GPU voxelizer
+//                 without conservative rasterization: one voxel per covered column centre, k =
+//                 floor(depth)). Thin (about one voxel) like ColumnCentre, but no triangle is lost
+//                 and the voxels of a surface stay 26-connected, so no line crosses it unseen.
 //
 // Exact enumerates the ThreeAxis candidates and keeps those that pass the 3D overlap test, so its
 // cost is about that of ThreeAxis times the test. Voxels outside the grid are dropped.
@@ -28,7 +32,7 @@
 
 namespace aokit {
 
-enum class VoxelizeMethod { Exact, ThreeAxis, ColumnCentre };
+enum class VoxelizeMethod { Exact, ThreeAxis, ColumnCentre, DominantCentre };
 
 // One triangle given in grid coordinates (VoxelFrame::toGrid), ORed into `grid`.
 void voxelizeTriangle(VoxelGrid& grid, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,

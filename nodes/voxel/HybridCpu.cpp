@@ -31,8 +31,9 @@ HybridCpuResult computeHybridAOCpu(Node& root, const Camera& camera, const Surfa
   }
   std::vector<GeometryInstance> casters;
   for (std::size_t i : out.region.casters) casters.push_back(all[i]);
-  const VoxelizeMethod method =
-      s.frame == VoxelizingFrame::Rotated ? VoxelizeMethod::ColumnCentre : VoxelizeMethod::ThreeAxis;
+  const VoxelizeMethod method = s.frame == VoxelizingFrame::Rotated        ? VoxelizeMethod::ColumnCentre
+                                : s.frame == VoxelizingFrame::DominantAxis ? VoxelizeMethod::DominantCentre
+                                                                           : VoxelizeMethod::ThreeAxis;
   const VoxelGrid grid = voxelizeInstances(casters, out.region.frame, method, s.solid);
   out.voxels = grid.count();
 

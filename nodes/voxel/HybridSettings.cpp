@@ -33,8 +33,9 @@ void validate(const HybridSettings& s) {
         << s.memoryBudgetMiB << " MiB (raise memoryBudgetMiB or lower gridResolution)";
     throw std::invalid_argument(msg.str());
   }
-  if (s.frame != VoxelizingFrame::ThreeAxis && s.frame != VoxelizingFrame::Rotated)
-    fail("frame", "ThreeAxis or Rotated", static_cast<int>(s.frame));
+  if (s.frame != VoxelizingFrame::ThreeAxis && s.frame != VoxelizingFrame::Rotated &&
+      s.frame != VoxelizingFrame::DominantAxis)
+    fail("frame", "ThreeAxis, Rotated or DominantAxis", static_cast<int>(s.frame));
   if (s.region == RegionMode::Box) {
     const Bounds& b = s.regionBox;
     const bool finiteBox = finite(b.min.x) && finite(b.min.y) && finite(b.min.z) && finite(b.max.x) &&

@@ -19,6 +19,8 @@ enum class VoxelizingFrame {
               // at its edges (needs image atomics, or one grid per axis merged afterwards)
   Rotated,    // the seed's: one orthographic rasterization along a randomly rotated grid axis,
               // one voxel per covered column centre (ROP logic-op OR into RGBA32UI targets)
+  DominantAxis,  // each triangle rasterized along its dominant grid axis, one voxel per covered
+                 // column centre: thin like the seed's, nothing lost (needs image atomics too)
 };
 
 enum class RegionMode {
@@ -37,6 +39,9 @@ struct HybridSettings {
   RegionMode region = RegionMode::Auto;
   Bounds regionBox;                 //!< world units; Box mode only: a valid box of positive volume
   double regionBudget = 64.0;       //!< longest side of the auto region, in units of R, 4..1024
+  bool snapToLattice = true;        //!< voxel size on a 2^(1/8) ladder, grid origin on its multiples
+                                    //!<   (VoxelFrame::onLattice): a moving camera does not shift the
+                                    //!<   voxels; costs up to 9% of the resolution
 
   // AO sampling (eq. 4).
   int rays = 32;                    //!< rays per AO-map pixel, 1..256 (seed Table 1: 32)

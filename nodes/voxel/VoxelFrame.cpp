@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "voxel/HybridSampling.h"
 
@@ -22,16 +23,41 @@ Bounds VoxelFrame::worldBounds() const {
   return b;
 }
 
-VoxelFrame VoxelFrame::fitting(const Bounds& box, int resolution, const glm::dmat3& axes) {
+namespace {
+
+// The box in the frame's coordinates.
+Bounds localBox(const Bounds& box, const glm::dmat3& axes, int resolution, int minResolution) {
   if (!box.valid() || !std::isfinite(box.diagonal()))
     throw std::invalid_argument("voxel frame: the region is empty or not finite");
-  if (resolution < 1) throw std::invalid_argument("voxel frame: resolution must be >= 1");
-  // The box in the frame's coordinates.
+  if (resolution < minResolution)
+    throw std::invalid_argument("voxel frame: resolution must be >= " + std::to_string(minResolution));
   Bounds local;
   const glm::dmat3 toLocal = glm::transpose(axes);
   for (int c = 0; c < 8; ++c)
     local.extend(toLocal * glm::dvec3((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y,
                                       (c & 4) ? box.max.z : box.min.z));
+  return local;
+}
+
+}  // namespace
+
+VoxelFrame VoxelFrame::onLattice(const Bounds& box, int resolution, const glm::dmat3& axes) {
+  const Bounds local = localBox(box, axes, resolution, 2);
+  const glm::dvec3 side = local.max - local.min;
+  const double longest = std::max({side.x, side.y, side.z});
+  if (!(longest > 0.0)) throw std::invalid_argument("voxel frame: the region has no extent");
+  VoxelFrame f;
+  f.axes = axes;
+  f.voxelSize = std::exp2(std::ceil(8.0 * std::log2(longest / (resolution - 2))) / 8.0);
+  const glm::dvec3 lowLocal = (glm::floor(local.min / f.voxelSize - 0.5) + 0.5) * f.voxelSize;
+  for (int a = 0; a < 3; ++a)
+    f.dims[a] = std::clamp(static_cast<int>(std::ceil((local.max[a] - lowLocal[a]) / f.voxelSize)), 1, resolution);
+  f.origin = axes * lowLocal;
+  return f;
+}
+
+VoxelFrame VoxelFrame::fitting(const Bounds& box, int resolution, const glm::dmat3& axes) {
+  const Bounds local = localBox(box, axes, resolution, 1);
   const glm::dvec3 side = local.max - local.min;
   const double longest = std::max({side.x, side.y, side.z});
   if (!(longest > 0.0)) throw std::invalid_argument("voxel frame: the region has no extent");

@@ -99,7 +99,8 @@ VoxelRegion computeVoxelRegion(const std::vector<Bounds>& casters, const ViewFru
       out.box.max[a] = c + 0.5 * voxel;
     }
   const glm::dmat3 axes = s.frame == VoxelizingFrame::Rotated ? randomRotation(s.frameSeed) : glm::dmat3(1.0);
-  out.frame = VoxelFrame::fitting(out.box, s.gridResolution, axes);
+  out.frame = s.snapToLattice ? VoxelFrame::onLattice(out.box, s.gridResolution, axes)
+                              : VoxelFrame::fitting(out.box, s.gridResolution, axes);
   out.memoryBytes = packedGridBytes(out.frame.dims.x, out.frame.dims.y, out.frame.dims.z);
   out.empty = false;
   return out;

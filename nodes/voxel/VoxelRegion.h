@@ -9,8 +9,10 @@
 // D whose region fits: receivers deeper than D get no hybrid AO (coveredDepth says where), the
 // near field keeps its voxel size. Box: the given world box.
 //
-// Voxel size follows: longest side / gridResolution (<= regionBudget R / gridResolution in Auto).
-// A rotated frame (VoxelizingFrame::Rotated) fits a box around the region in its own axes.
+// Voxel size follows: longest side / gridResolution (<= regionBudget R / gridResolution in Auto),
+// or, with snapToLattice, the next step of a 2^(1/8) ladder above longest side / (gridResolution - 1)
+// with the origin on that lattice. A rotated frame (VoxelizingFrame::Rotated) covers the region
+// with a box in its own axes.
 #include <cstddef>
 #include <vector>
 
