@@ -100,6 +100,10 @@ TEST(HybridMarch, OutsideTheGridIsEmptyAndBadPixelsAreSkipped) {
   const HybridMarchConstants c = makeHybridMarchConstants(settings(32, 8, true), 1.0, Falloff::Binary, ceiling.frame);
   // Far from the grid: nothing to hit.
   EXPECT_EQ(marchHybridAO(ceiling.grid, c, glm::vec3(50.0f, 0.0f, 0.0f), glm::vec3(0, 0, 1)), 0.0f);
+  // Beyond the int range, or not a number: no occlusion, no undefined conversion.
+  EXPECT_EQ(marchHybridAO(ceiling.grid, c, glm::vec3(3e30f, -3e30f, 1e38f), glm::vec3(0, 0, 1)), 0.0f);
+  EXPECT_EQ(marchHybridAO(ceiling.grid, c, glm::vec3(NAN, 0.0f, 0.0f), glm::vec3(0, 0, 1)), 0.0f);
+  EXPECT_EQ(marchHybridAO(ceiling.grid, c, glm::vec3(0.0f), glm::vec3(NAN)), 0.0f);
   SurfaceSamples s;
   s.resize(4, 3);
   for (std::size_t i = 0; i < s.pixelCount(); ++i) {

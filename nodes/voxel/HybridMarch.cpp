@@ -43,7 +43,18 @@ HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, double sc
   return c;
 }
 
+namespace {
+// floor(g) per axis, clamped to [-1, dims] first: outside stays outside, and no float beyond the
+// int range is converted (undefined in C++ and in GLSL alike).
+glm::ivec3 voxelOf(const glm::vec3& g, const glm::ivec3& dims) {
+  const glm::vec3 lo(-1.0f), hi(dims);
+  return glm::ivec3(glm::floor(glm::clamp(g, lo, hi)));
+}
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}  // namespace
+
 float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const glm::vec3& p, const glm::vec3& n) {
+  if (!finite(p) || !finite(n)) return 0.0f;
   const glm::vec3 jitter = hybridJitter(hybridJitterKey(p, n, c.invJitterCell, c.jitterSeed));
   glm::vec3 t, b;
   hybridBasis(n, t, b);
@@ -57,14 +68,13 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
     const glm::vec3 dir = m3 * (local.x * t + local.y * b + local.z * n);
     const float offset = hybridStepOffset(i, jitter.z);
     float k = 0.0f;
-    int previousK = static_cast<int>(std::floor(origin.z));
+    int previousK = voxelOf(origin, c.dims).z;
     for (int j = 0; j < c.steps; ++j) {
       const float dist = (static_cast<float>(j) + offset) * stepLength;
-      const glm::vec3 g = origin + dist * dir;
-      const int gi = static_cast<int>(std::floor(g.x)), gj = static_cast<int>(std::floor(g.y));
-      const int gk = static_cast<int>(std::floor(g.z));
-      const bool hit = c.spanTest ? grid.anyInRun(gi, gj, std::min(previousK, gk), std::max(previousK, gk))
-                                  : grid.get(gi, gj, gk);
+      const glm::ivec3 v = voxelOf(origin + dist * dir, c.dims);
+      const int gk = v.z;
+      const bool hit = c.spanTest ? grid.anyInRun(v.x, v.y, std::min(previousK, gk), std::max(previousK, gk))
+                                  : grid.get(v.x, v.y, gk);
       if (hit) {
         k = hybridFalloff(c.falloff, dist, c.radius);
         break;  // the GPU keeps stepping (no branch) but adds only the first hit

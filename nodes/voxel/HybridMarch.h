@@ -2,9 +2,10 @@
 // The Hybrid AO estimator on the CPU, step for step as the GPU march shader: the oracle for
 // GPU-vs-CPU tests and the tool that charts convergence to the reference (HybridSampling.h has the
 // formulas). Step j of a ray reaches g_j = M (origin + t_j dir) (M the float world-to-grid
-// matrix, g_-1 = M origin) and tests column (floor g_j.x, floor g_j.y): with the span test every
-// voxel k in [min, max] of (floor g_{j-1}.z, floor g_j.z), else only k = floor g_j.z. Outside the
-// grid reads as empty.
+// matrix, g_-1 = M origin; each g clamped to [-1, dims] before floor, so the int conversion is
+// defined) and tests column (floor g_j.x, floor g_j.y): with the span test every voxel k in
+// [min, max] of (floor g_{j-1}.z, floor g_j.z), clamped to the grid, else only k = floor g_j.z.
+// Outside the grid reads as empty. A non-finite point or normal gives 0.
 #include <cstdint>
 #include <string>
 

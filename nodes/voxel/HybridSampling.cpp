@@ -13,7 +13,9 @@ float fract(float x) { return x - std::floor(x); }
 }  // namespace
 
 std::uint32_t hybridJitterKey(const glm::vec3& p, const glm::vec3& n, float invCell, std::uint32_t seed) {
-  const glm::ivec3 cell(std::floor(p.x * invCell), std::floor(p.y * invCell), std::floor(p.z * invCell));
+  // Clamped to +-2^30 cells before the int conversion (undefined beyond the int range).
+  auto cellOf = [&](float x) { return static_cast<int>(std::clamp(std::floor(x * invCell), -1073741824.0f, 1073741824.0f)); };
+  const glm::ivec3 cell(cellOf(p.x), cellOf(p.y), cellOf(p.z));
   auto quant = [](float c) { return static_cast<std::uint32_t>(std::clamp(std::floor((c + 1.0f) * 4.0f), 0.0f, 7.0f)); };
   const std::uint32_t q = quant(n.x) | (quant(n.y) << 3) | (quant(n.z) << 6);
   std::uint32_t key = hybridHash(seed ^ q);

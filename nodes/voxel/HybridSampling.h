@@ -18,7 +18,7 @@
 //
 // Jitter: an object-space white noise, keyed by the world position's cell and the quantized normal,
 // so the pattern sticks to surfaces when the camera moves (the seed's tiled 3D noise texture):
-//     cell  = ivec3(floor(p * invCell))                         (float multiply, then floor)
+//     cell  = ivec3(clamp(floor(p * invCell), -2^30, 2^30))      (float multiply, then floor)
 //     q     = uvec3(clamp(floor((n + 1) * 4), 0, 7))            3 bits per normal component
 //     key   = H(H(H(H(seed ^ (q.x | q.y << 3 | q.z << 6)) ^ uint(cell.x)) ^ uint(cell.y)) ^ uint(cell.z))
 //     du = U(key), dphi = U(H(key)), dt = U(H(H(key)))
