@@ -22,6 +22,8 @@ const std::vector<std::pair<std::string, Builder>>& registry() {
       {"room", [](const BuiltinOptions&) { return makeRoomScene(0.85f); }},
       {"room-dark", [](const BuiltinOptions&) { return makeRoomScene(0.15f); }},
       {"open-box", [](const BuiltinOptions&) { return makeOpenBoxScene(); }},
+      {"hidden", [](const BuiltinOptions&) { return makeHiddenScene(); }},
+      {"behind", [](const BuiltinOptions&) { return makeBehindScene(); }},
       {"animated", [](const BuiltinOptions&) { return makeAnimatedScene(); }},
       {"bunny", [](const BuiltinOptions& o) { return makePackagedMeshScene("bunny", o.modelsDir); }},
       {"fandisk", [](const BuiltinOptions& o) { return makePackagedMeshScene("fandisk", o.modelsDir); }},

@@ -15,7 +15,8 @@ struct BuiltinOptions {
   std::string modelsDir;    //!< "bunny", "fandisk": folder holding packaged/; empty: defaultModelsDir()
 };
 
-// sphere-plane, sphere-offscreen, cubes, tank, corridor, room, room-dark, animated, bunny, fandisk.
+// sphere-plane, sphere-offscreen, cubes, tank, corridor, room, room-dark, open-box, hidden, behind,
+// animated, bunny, fandisk.
 std::vector<std::string> builtinSceneNames();
 
 // Throws std::invalid_argument for an unknown name or an option out of range, and

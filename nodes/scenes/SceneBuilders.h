@@ -16,6 +16,8 @@ Scene makeCorridorScene();
 Scene makeRoomScene(float albedo);
 Scene makeAnimatedScene();
 Scene makeOpenBoxScene();
+Scene makeHiddenScene();
+Scene makeBehindScene();
 // "bunny" or "fandisk": a packaged mesh stood on a ground plane.
 Scene makePackagedMeshScene(const std::string& name, const std::string& modelsDir);
 

@@ -1,0 +1,111 @@
+#include "voxel/BilateralUpsample.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "voxel/HybridSampling.h"
+
+namespace aokit {
+
+float bilateralDomainWeight(float pixels, int filterSize) { return wendland(pixels, static_cast<float>(filterSize)); }
+
+float bilateralNormalWeight(const glm::vec3& nx, const glm::vec3& ny, float support) {
+  return wendland(std::max(0.0f, 1.0f - glm::dot(nx, ny)), support);
+}
+
+float bilateralPositionWeight(const glm::vec3& px, const glm::vec3& py, float support) {
+  return wendland(glm::length(px - py), support);
+}
+
+float bilateralAOWeight(float ax, float ay, float support) { return wendland(ax - ay, support); }
+
+SurfaceSamples lowResolutionSamples(const SurfaceSamples& full, int k) {
+  if (k < 1) throw std::invalid_argument("bilateral: scale must be >= 1");
+  full.validate();
+  SurfaceSamples low;
+  low.resize((full.width + k - 1) / k, (full.height + k - 1) / k);
+  for (int j = 0; j < low.height; ++j)
+    for (int i = 0; i < low.width; ++i) {
+      const std::size_t src = full.index(std::min(k * i + (k - 1) / 2, full.width - 1),
+                                         std::min(k * j + (k - 1) / 2, full.height - 1));
+      const std::size_t dst = low.index(i, j);
+      low.position[dst] = full.position[src];
+      low.normal[dst] = full.normal[src];
+      low.covered[dst] = full.covered[src];
+    }
+  return low;
+}
+
+namespace {
+
+void checkParams(const BilateralParams& p) {
+  auto positive = [](float v) { return v > 0.0f && std::isfinite(v); };
+  if (p.filterSize < 1) throw std::invalid_argument("bilateral: filterSize must be >= 1");
+  if (p.scale < 1 || p.scale > 8) throw std::invalid_argument("bilateral: scale must be in 1..8");
+  if (!positive(p.normalSupport) || p.normalSupport > 2.0f)
+    throw std::invalid_argument("bilateral: normalSupport must be in (0, 2]");
+  if (!positive(p.positionSupport)) throw std::invalid_argument("bilateral: positionSupport must be positive");
+  if (!positive(p.aoSupport)) throw std::invalid_argument("bilateral: aoSupport must be positive");
+}
+
+void checkSizes(const AOBuffer& ao, const SurfaceSamples& g, int w, int h, const char* what) {
+  ao.validate();
+  g.validate();
+  if (ao.width != w || ao.height != h || g.width != w || g.height != h)
+    throw std::invalid_argument(std::string("bilateral: ") + what + " must be " + std::to_string(w) + " x " +
+                                std::to_string(h) + ", got AO " + std::to_string(ao.width) + " x " +
+                                std::to_string(ao.height) + " and G-buffer " + std::to_string(g.width) + " x " +
+                                std::to_string(g.height));
+}
+
+// One pass along x or y. `src` (with guide `srcG`) is read at texel y / k.
+AOBuffer pass(const AOBuffer& src, const SurfaceSamples& srcG, int k, const SurfaceSamples& g,
+              const BilateralParams& p, bool horizontal) {
+  AOBuffer out;
+  out.resize(g.width, g.height);
+  const int r = p.filterSize / 2;
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      const std::size_t i = g.index(x, y);
+      if (!g.covered[i]) continue;
+      const glm::vec3 &px = g.position[i], &nx = g.normal[i];
+      auto rangeGeometry = [&](std::size_t t) {
+        return bilateralNormalWeight(nx, srcG.normal[t], p.normalSupport) *
+               bilateralPositionWeight(px, srcG.position[t], p.positionSupport);
+      };
+      const std::size_t own = src.index(x / k, y / k);
+      const bool useAO = src.covered[own] && rangeGeometry(own) > 0.0f;
+      float sum = 0.0f, weights = 0.0f;
+      for (int d = -r; d <= r; ++d) {
+        const int qx = horizontal ? x + d : x, qy = horizontal ? y : y + d;
+        if (qx < 0 || qy < 0 || qx >= g.width || qy >= g.height) continue;
+        const std::size_t t = src.index(qx / k, qy / k);
+        if (!src.covered[t]) continue;
+        float w = bilateralDomainWeight(static_cast<float>(std::abs(d)), p.filterSize) * rangeGeometry(t);
+        if (useAO) w *= bilateralAOWeight(src.ao[own], src.ao[t], p.aoSupport);
+        sum += w * src.ao[t];
+        weights += w;
+      }
+      if (weights > 0.0f) {
+        out.ao[i] = sum / weights;
+        out.covered[i] = 1;
+      }
+    }
+  return out;
+}
+
+}  // namespace
+
+AOBuffer jointBilateralUpsample(const AOBuffer& lowAO, const SurfaceSamples& lowG, const SurfaceSamples& fullG,
+                                const BilateralParams& p) {
+  checkParams(p);
+  fullG.validate();
+  checkSizes(lowAO, lowG, (fullG.width + p.scale - 1) / p.scale, (fullG.height + p.scale - 1) / p.scale,
+             "the low-resolution AO map and its G-buffer");
+  const AOBuffer horizontal = pass(lowAO, lowG, p.scale, fullG, p, true);
+  return pass(horizontal, fullG, 1, fullG, p, false);
+}
+
+}  // namespace aokit

@@ -1,0 +1,111 @@
+#include "voxel/HybridMarch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "reference/ParallelRows.h"
+#include "voxel/HybridSampling.h"
+
+namespace aokit {
+
+std::string HybridMarchConstants::defines() const {
+  std::ostringstream d;
+  d << "#define HAO_RAYS " << rays << "\n"
+    << "#define HAO_STEPS " << steps << "\n"
+    << "#define HAO_FALLOFF " << static_cast<int>(falloff) << "\n"
+    << "#define HAO_SPAN_TEST " << int(spanTest) << "\n";
+  return d.str();
+}
+
+HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, double sceneRadius, Falloff sceneFalloff,
+                                              const VoxelFrame& frame) {
+  validate(s);
+  const double R = s.radius > 0.0 ? s.radius : sceneRadius;
+  if (!std::isfinite(R) || !(R > 0.0))
+    throw std::invalid_argument("hybrid: radius must be positive: set it or give the scene an AO radius");
+  if (!(frame.voxelSize > 0.0) || !std::isfinite(frame.voxelSize))
+    throw std::invalid_argument("hybrid: the voxel frame has no positive voxel size");
+  HybridMarchConstants c;
+  c.rays = s.rays;
+  c.steps = s.steps;
+  c.falloff = s.falloff.value_or(sceneFalloff);
+  c.spanTest = s.spanTest;
+  c.radius = static_cast<float>(R);
+  c.cosMax = static_cast<float>(std::max(0.0, std::cos(s.spread * 1.5707963267948966)));
+  if (s.spread >= 1.0) c.cosMax = 0.0f;
+  c.normalOffset = static_cast<float>(s.normalOffset * frame.voxelSize);
+  c.invJitterCell = static_cast<float>(1.0 / (s.jitterCell * frame.voxelSize));
+  c.jitterSeed = s.jitterSeed;
+  c.worldToGrid = frame.worldToGridMatrix();
+  c.dims = frame.dims;
+  return c;
+}
+
+namespace {
+// floor(g) per axis, clamped to [-1, dims] first: outside stays outside, and no float beyond the
+// int range is converted (undefined in C++ and in GLSL alike).
+glm::ivec3 voxelOf(const glm::vec3& g, const glm::ivec3& dims) {
+  const glm::vec3 lo(-1.0f), hi(dims);
+  return glm::ivec3(glm::floor(glm::clamp(g, lo, hi)));
+}
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}  // namespace
+
+float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const glm::vec3& p, const glm::vec3& n) {
+  if (!finite(p) || !finite(n)) return 0.0f;
+  const glm::vec3 jitter = hybridJitter(hybridJitterKey(p, n, c.invJitterCell, c.jitterSeed));
+  glm::vec3 t, b;
+  hybridBasis(n, t, b);
+  // In grid space: origin and directions go through the matrix once, steps are then additions.
+  const glm::mat3 m3(c.worldToGrid);
+  const glm::vec3 origin = glm::vec3(c.worldToGrid * glm::vec4(p + c.normalOffset * n, 1.0f));
+  const float stepLength = c.radius / static_cast<float>(c.steps);
+  float sum = 0.0f, weights = 0.0f;
+  for (int i = 0; i < c.rays; ++i) {
+    const glm::vec3 local = hybridRayLocal(i, c.rays, c.cosMax, glm::vec2(jitter.x, jitter.y));
+    const glm::vec3 dir = m3 * (local.x * t + local.y * b + local.z * n);
+    const float offset = hybridStepOffset(i, jitter.z);
+    float k = 0.0f;
+    int previousK = voxelOf(origin, c.dims).z;
+    for (int j = 0; j < c.steps; ++j) {
+      const float dist = (static_cast<float>(j) + offset) * stepLength;
+      const glm::ivec3 v = voxelOf(origin + dist * dir, c.dims);
+      const int gk = v.z;
+      const bool hit = c.spanTest ? grid.anyInRun(v.x, v.y, std::min(previousK, gk), std::max(previousK, gk))
+                                  : grid.get(v.x, v.y, gk);
+      if (hit) {
+        k = hybridFalloff(c.falloff, dist, c.radius);
+        break;  // the GPU keeps stepping (no branch) but adds only the first hit
+      }
+      previousK = gk;
+    }
+    sum += k * local.z;
+    weights += local.z;
+  }
+  return weights > 0.0f ? sum / weights : 0.0f;
+}
+
+AOBuffer marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const SurfaceSamples& samples,
+                       int threads) {
+  samples.validate();
+  AOBuffer out;
+  out.resize(samples.width, samples.height);
+  parallelRows(samples.height, threads, [&](int y) {
+    for (int x = 0; x < samples.width; ++x) {
+      const std::size_t i = samples.index(x, y);
+      if (!samples.covered[i]) continue;
+      const glm::vec3 n = samples.normal[i];
+      const float len = glm::length(n);
+      if (!(len > 0.0f) || !std::isfinite(len)) continue;
+      const glm::vec3 p = samples.position[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+      out.ao[i] = marchHybridAO(grid, c, p, n / len);
+      out.covered[i] = 1;
+    }
+  });
+  return out;
+}
+
+}  // namespace aokit

@@ -1,0 +1,53 @@
+#pragma once
+// The Hybrid AO estimator on the CPU, step for step as the GPU march shader: the oracle for
+// GPU-vs-CPU tests and the tool that charts convergence to the reference (HybridSampling.h has the
+// formulas). Step j of a ray reaches g_j = M (origin + t_j dir) (M the float world-to-grid
+// matrix, g_-1 = M origin; each g clamped to [-1, dims] before floor, so the int conversion is
+// defined) and tests column (floor g_j.x, floor g_j.y): with the span test every voxel k in
+// [min, max] of (floor g_{j-1}.z, floor g_j.z), clamped to the grid, else only k = floor g_j.z.
+// Outside the grid reads as empty. A non-finite point or normal gives 0.
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "core/AOScene.h"
+#include "reference/SurfaceSamples.h"
+#include "voxel/HybridSettings.h"
+#include "voxel/VoxelFrame.h"
+#include "voxel/VoxelGrid.h"
+
+namespace aokit {
+
+// What the march shader gets: shape as #defines, values as uniforms.
+struct HybridMarchConstants {
+  int rays = 32;                      // #define HAO_RAYS
+  int steps = 8;                      // #define HAO_STEPS
+  Falloff falloff = Falloff::Binary;  // #define HAO_FALLOFF (0 binary, 1 wendland, 2 sqrt, 3 exponential)
+  bool spanTest = true;               // #define HAO_SPAN_TEST
+  float radius = 1.0f;                // world units
+  float cosMax = 0.0f;                // cos of the cone half-angle: cos(spread * 90 deg), >= 0
+  float normalOffset = 0.0f;          // world units
+  float invJitterCell = 1.0f;         // 1 / world units
+  std::uint32_t jitterSeed = 0;
+  glm::mat4 worldToGrid{1.0f};
+  glm::ivec3 dims{1};
+
+  std::string defines() const;
+};
+
+// Validates the settings, then resolves them against the scene (radius, falloff) and the grid's frame
+// (offset and jitter cell are in voxels). Throws std::invalid_argument on bad settings or when no
+// positive radius can be resolved.
+HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, double sceneRadius, Falloff sceneFalloff,
+                                              const VoxelFrame& frame);
+
+// A(p, n) of one surface point (n unit length), in [0, 1].
+float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const glm::vec3& p, const glm::vec3& n);
+
+// Every covered pixel (uncovered ones, and zero or non-finite normals, come back uncovered). Rows
+// run on `threads` workers (0 = all cores); results do not depend on the thread count.
+AOBuffer marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const SurfaceSamples& samples,
+                       int threads = 0);
+
+}  // namespace aokit
