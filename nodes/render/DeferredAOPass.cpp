@@ -331,9 +331,9 @@ std::size_t DeferredAOPass::MemoryBytes() const {
 void DeferredAOPass::ReleaseGraphicsResources(vtkWindow* w) {
   Superclass::ReleaseGraphicsResources(w);
   GBuffer->ReleaseGraphicsResources(w);
-  UpsampleStage->release();
-  CombineStage->release();
-  AOOutputStage->release();
+  UpsampleStage->release(w);
+  CombineStage->release(w);
+  AOOutputStage->release(w);
   ReleaseFamily(w);
   if (auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(w)) {
     renWin->MakeCurrent();

@@ -57,7 +57,8 @@ void FullScreenStage::renderInto(vtkOpenGLFramebufferObject* fbo, std::initializ
   state->PopFramebufferBindings();
 }
 
-void FullScreenStage::release() {
+void FullScreenStage::release(vtkWindow* window) {
+  if (window && quad_ && quad_->Program) quad_->Program->ReleaseGraphicsResources(window);
   delete quad_;
   quad_ = nullptr;
   failed_ = false;

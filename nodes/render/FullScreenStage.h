@@ -11,6 +11,7 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
+class vtkWindow;
 
 namespace aokit {
 
@@ -29,8 +30,10 @@ class FullScreenStage {
   // Draws it into `targets` (colour attachments 0, 1, ...) through `fbo`, at the first target's
   // size; the previous framebuffer bindings are restored.
   void renderInto(vtkOpenGLFramebufferObject* fbo, std::initializer_list<vtkTextureObject*> targets);
-  // Drops the program and vertex arrays (the context is going away or changing).
-  void release();
+  // Drops the program and vertex arrays. With the window, also the compiled GL program, which
+  // VTK's shader cache would otherwise keep for the life of the window (a detached technique must
+  // not leave its programs behind).
+  void release(vtkWindow* window = nullptr);
 
   const std::string& name() const { return name_; }
   // The fragment source as compiled for `defines` (tests, debugging).

@@ -353,6 +353,7 @@ std::size_t GBufferPass::MemoryBytes() const {
 void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {
   Superclass::ReleaseGraphicsResources(w);
   if (Delegate) Delegate->ReleaseGraphicsResources(w);
+  if (CopyQuad && CopyQuad->Program) CopyQuad->Program->ReleaseGraphicsResources(w);
   delete CopyQuad;
   CopyQuad = nullptr;
   ColorTexture = PositionTexture = NormalTexture = DepthTexture = FlagsTexture = InstanceIdTexture = nullptr;

@@ -8,6 +8,7 @@
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
+class vtkWindow;
 
 namespace aokit {
 
@@ -21,7 +22,7 @@ class ObscuranceFilter {
            vtkTextureObject* viewZ, vtkTextureObject* out, const ObscuranceConstants& c);
   // Builds the program for these constants without drawing (nullptr on a compile failure).
   bool ready(vtkOpenGLRenderWindow* renWin, const ObscuranceConstants& c);
-  void release() { stage_.release(); }
+  void release(vtkWindow* window = nullptr) { stage_.release(window); }
 
  private:
   FullScreenStage stage_;

@@ -116,9 +116,9 @@ vtkTextureObject* ObscurancePass::RenderAO(DeferredFrame& f) {
 
 std::size_t ObscurancePass::FamilyMemoryBytes() const { return textureBytes(FilteredTarget); }
 
-void ObscurancePass::ReleaseFamily(vtkWindow*) {
-  ObscuranceStage->release();
-  Filter->release();
+void ObscurancePass::ReleaseFamily(vtkWindow* w) {
+  ObscuranceStage->release(w);
+  Filter->release(w);
   FilteredTarget = nullptr;
 }
 
