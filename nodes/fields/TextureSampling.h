@@ -2,14 +2,14 @@
 // CPU mirrors of OpenGL linear texture filtering (GL_LINEAR, GL_CLAMP_TO_EDGE), so that the CPU
 // evaluators are the exact specification of what a shader fetching the same data will compute.
 //
-// Texel space: a texture of `size` texels has texel centres at i + 0.5 in [0, size]; GL samples a
-// texture coordinate s at texel-space x = s * size - 0.5, blending texels floor(x) and floor(x)+1
-// with weight fract(x) (indices clamped to [0, size - 1]). The functions here take that x.
+// Filter coordinate: GL samples texture coordinate s of a `size`-texel axis at x = s * size - 0.5,
+// where texel i is centred at x = i, blending texels floor(x) and floor(x) + 1 with weight fract(x)
+// (indices clamped to [0, size - 1]). The functions here take that x.
 // (GPUs quantize the blend weight, typically to 8 bits: a GPU-vs-CPU comparison needs a tolerance
 // of about 1/256 of the local texel difference, or a shader that filters with texelFetch.)
 //
 // Look-up tables store a function on an endpoint-inclusive grid: entry i holds f(i / (size - 1)),
-// so a parameter u in [0, 1] sits at texel-space x = u * (size - 1), i.e. texture coordinate
+// so a parameter u in [0, 1] sits at filter coordinate x = u * (size - 1), i.e. texture coordinate
 // (u * (size - 1) + 0.5) / size. tableCoordinate() does that mapping (clamping u to [0, 1]).
 #include <algorithm>
 #include <cmath>
