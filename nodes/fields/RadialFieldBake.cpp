@@ -31,7 +31,6 @@ struct HiResGrid {
 };
 
 struct HiResSamples {
-  int radii;
   std::vector<float> r0;          // per direction
   std::vector<glm::dvec3> dir;    // per direction (unit)
   std::vector<float> r, omega;    // per direction x radius
@@ -93,7 +92,7 @@ RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, do
   const HiResGrid grid(n, s.supersampling);
   const int k = s.radialSamples;
   const std::size_t dirs = 6u * grid.side * grid.side;
-  HiResSamples hi{k, std::vector<float>(dirs), std::vector<glm::dvec3>(dirs), std::vector<float>(dirs * k),
+  HiResSamples hi{std::vector<float>(dirs), std::vector<glm::dvec3>(dirs), std::vector<float>(dirs * k),
                   std::vector<float>(dirs * k), std::vector<glm::vec3>(dirs * k)};
   const std::vector<glm::dvec3> sphere = fibonacciSphere(s.raysPerSample);
   const double deltaMin = 0.01 * radius;
@@ -168,7 +167,9 @@ RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, do
                 if (omega > 0.0) dirSamples.push_back({r * hi.dir[d], glm::dvec3(hi.upsilon[at]), g * omega});
               }
             }
-          const SolidAngleModel m = fitSolidAngle(omegaSamples, minR0, field.rMax);
+          // Feasible (Omega <= 4 pi, no pole) from below the smallest r0 around: the shader clamps r
+          // to the bilinearly interpolated r0, which neighbouring texels can pull lower.
+          const SolidAngleModel m = fitSolidAngle(omegaSamples, 0.8 * minR0, field.rMax);
           const glm::dvec3 w = glm::normalize(faceDirection(face, borderedTexelCentre(i, n), borderedTexelCentre(j, n)));
           glm::dvec3 c0 = fitDirectionCentre(dirSamples, glm::dvec3(0.0));
           const double along = glm::dot(c0, w), limit = 0.9 * r0;
