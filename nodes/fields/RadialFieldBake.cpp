@@ -167,9 +167,10 @@ RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, do
                 if (omega > 0.0) dirSamples.push_back({r * hi.dir[d], glm::dvec3(hi.upsilon[at]), g * omega});
               }
             }
-          // Feasible (Omega <= 4 pi, no pole) from below the smallest r0 around: the shader clamps r
-          // to the bilinearly interpolated r0, which neighbouring texels can pull lower.
-          const SolidAngleModel m = fitSolidAngle(omegaSamples, 0.8 * minR0, field.rMax);
+          // Feasible (Omega <= 4 pi) from the smallest r0 around. Where the shader's interpolated r0
+          // is lower still, Omega may reach 4 pi, but continuously: the evaluator clamps 1/D to
+          // 4 pi and counts D <= 0 as 4 pi. Demanding more (down to 0.8 r0) doubled the sphere's error.
+          const SolidAngleModel m = fitSolidAngle(omegaSamples, minR0, field.rMax);
           const glm::dvec3 w = glm::normalize(faceDirection(face, borderedTexelCentre(i, n), borderedTexelCentre(j, n)));
           glm::dvec3 c0 = fitDirectionCentre(dirSamples, glm::dvec3(0.0));
           const double along = glm::dot(c0, w), limit = 0.9 * r0;
