@@ -25,8 +25,8 @@ void validate(const FieldSettings& s) {
   if (s.combine == FieldCombine::Cone && s.kind != FieldKind::Cube)
     throw std::invalid_argument("field: combine=cone needs kind=cube (grids store no cone)");
   if (!in(s.radius, 0.0, 1e30)) fail("radius", ">= 0 (0 = the scene's AO radius)", s.radius);
-  if (!in(s.farDistance, 0.0, 4.0) || s.farDistance <= 0.0) fail("farDistance", "in (0, 4] (a fraction of R)", s.farDistance);
-  if (!in(s.nearDistance, 0.0, 4.0) || s.nearDistance >= s.farDistance)
+  if (!in(s.farDistance, 0.0, 4.0)) fail("farDistance", "0 (auto) or in (0, 4] (a fraction of R)", s.farDistance);
+  if (s.farDistance > 0.0 && (!in(s.nearDistance, 0.0, 4.0) || s.nearDistance >= s.farDistance))
     fail("nearDistance", "in [0, farDistance) (a fraction of R)", s.nearDistance);
   if (!in(s.insideExponent, 0.0, 16.0) || s.insideExponent <= 0.0) fail("insideExponent", "in (0, 16]", s.insideExponent);
   if (!in(s.insideOcclusion, 0.0, 1.0)) fail("insideOcclusion", "in [0, 1]", s.insideOcclusion);

@@ -37,7 +37,8 @@ struct FieldSettings {
 
   // Cube fields.
   double nearDistance = 0.7;  //!< far fade start beyond the hull (r - r0), fraction of R, [0, farDistance)
-  double farDistance = 1.2;   //!< far fade end beyond the hull, fraction of R, (nearDistance, 4]; the
+  double farDistance = 0.0;   //!< far fade end beyond the hull, fraction of R, (nearDistance, 4]; 0 = auto
+                              //!< (the bake picks the best of a few windows, RadialFieldBake.h); the
                               //!< field always ends at bounding radius + R (nothing within R beyond)
   double insideExponent = 2.0;  //!< p of eq. 8: how fast the shadow inside the hull goes to A0, (0, 16]
   double insideOcclusion = 0.5; //!< A0 of eq. 8, [0, 1]

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "fields/CubeMapLayout.h"
@@ -69,6 +70,74 @@ double occlusionSensitivity(double omega) {
   return std::max(0.1, c * c);
 }
 
+
+// Far-fade candidates (fractions of R beyond the hull): a window ending about R past the hull
+// suits compact occluders (a box's shadow ends R below its face), one ending at the cull radius
+// suits flat or elongated ones (a plane's shadow reaches R / sin(elevation) along a direction).
+constexpr double kFadeCandidates[][2] = {{0.5, 1.5}, {0.7, 1.2}, {1.5, 2.5}, {3.75, 4.0}};
+
+struct TexelFit {
+  SolidAngleModel model;
+  glm::dvec3 c0{0.0};
+  double r0 = 0.0;
+  double residual = 0.0;  // the solid-angle fit's weighted squared residual
+};
+
+// Fits one stored texel (row = face * (N + 2) + j, column i) to the pooled samples of its taps.
+struct TexelFitter {
+  const RadialField& field;
+  const HiResGrid& grid;
+  const HiResSamples& hi;
+  int radii;
+
+  TexelFit fit(int row, int i, bool withDirection) const {
+    const int side = field.layerSide(), face = row / side, j = row % side;
+    const Taps tx = texelTaps(i, grid), ty = texelTaps(j, grid);
+    auto tapIndex = [&](int a, int b) {
+      return (static_cast<std::size_t>(face) * grid.side + ty.index[b]) * grid.side + tx.index[a];
+    };
+    TexelFit out;
+    double sumW = 0.0, minR0 = field.rMax;
+    for (int b = 0; b < ty.count; ++b)
+      for (int a = 0; a < tx.count; ++a) {
+        const double g = tx.weight[a] * ty.weight[b];
+        sumW += g;
+        out.r0 += g * hi.r0[tapIndex(a, b)];
+        minR0 = std::min(minR0, static_cast<double>(hi.r0[tapIndex(a, b)]));
+      }
+    out.r0 /= sumW;
+    std::vector<SolidAngleSample> omegaSamples;
+    std::vector<DirectionSample> dirSamples;
+    for (int b = 0; b < ty.count; ++b)
+      for (int a = 0; a < tx.count; ++a) {
+        const double g = tx.weight[a] * ty.weight[b];
+        const std::size_t d = tapIndex(a, b);
+        for (int q = 0; q < radii; ++q) {
+          const std::size_t at = d * radii + q;
+          const double r = hi.r[at], omega = hi.omega[at];
+          omegaSamples.push_back({r, omega, field.fade(r, out.r0), g * occlusionSensitivity(omega)});
+          if (withDirection && omega > 0.0) dirSamples.push_back({r * hi.dir[d], glm::dvec3(hi.upsilon[at]), g * omega});
+        }
+      }
+    // Feasible (Omega <= 4 pi) from the smallest r0 around. Where the shader's interpolated r0 is
+    // lower still, Omega may reach 4 pi, but continuously: the evaluator clamps 1/D to 4 pi and
+    // counts D <= 0 as 4 pi. Demanding more (down to 0.8 r0) doubled the sphere's error.
+    out.model = fitSolidAngle(omegaSamples, minR0, field.rMax);
+    for (const auto& x : omegaSamples) {
+      const double e = x.omega - x.fade / out.model.denominator(x.r);
+      out.residual += x.weight * e * e;
+    }
+    if (withDirection) {
+      const glm::dvec3 w = glm::normalize(
+          faceDirection(face, borderedTexelCentre(i, field.resolution), borderedTexelCentre(j, field.resolution)));
+      out.c0 = fitDirectionCentre(dirSamples, glm::dvec3(0.0));
+      const double along = glm::dot(out.c0, w), limit = 0.9 * out.r0;
+      if (along > limit) out.c0 -= (along - limit) * w;
+    }
+    return out;
+  }
+};
+
 }  // namespace
 
 RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, double radius, Falloff falloff,
@@ -84,8 +153,6 @@ RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, do
   const HullRadius hull(mesh, field.centre, 4096, s.threads);
   field.boundingRadius = hull.boundingRadius();
   field.rMax = field.boundingRadius + radius;
-  field.fadeStart = s.nearDistance * radius;
-  field.fadeEnd = s.farDistance * radius;
 
   // Measure Omega and Upsilon along every supersampled direction.
   const auto scene = makeOccluderScene(mesh);
@@ -131,56 +198,46 @@ RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, do
       rayProgress);
   scene->throwIfError("radial field bake");
 
-  // Fit every stored texel to the Gaussian-weighted samples around it.
+  // Fit every stored texel to the Gaussian-weighted samples around it, with the far fade given or,
+  // by default, the candidate whose fits leave the smallest residual on a third of the texels.
+  const TexelFitter fitter{field, grid, hi, k};
+  if (s.farDistance > 0.0) {
+    field.fadeStart = s.nearDistance * radius;
+    field.fadeEnd = s.farDistance * radius;
+  } else {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& c : kFadeCandidates) {
+      RadialField trial = field;
+      trial.fadeStart = c[0] * radius;
+      trial.fadeEnd = c[1] * radius;
+      const TexelFitter f{trial, grid, hi, k};
+      std::vector<double> rowResidual(6 * field.layerSide(), 0.0);
+      parallelRows(6 * field.layerSide(), s.threads, [&](int row) {
+        for (int i = row % 3; i < field.layerSide(); i += 3) rowResidual[row] += f.fit(row, i, false).residual;
+      });
+      double total = 0.0;
+      for (double r : rowResidual) total += r;
+      if (total < best) {
+        best = total;
+        field.fadeStart = trial.fadeStart;
+        field.fadeEnd = trial.fadeEnd;
+      }
+    }
+  }
   const int side = field.layerSide();
   field.occlusion.assign(field.texelCount() * 4, 0.0f);
   field.centroid.assign(field.texelCount() * 3, 0.0f);
   parallelRows(
       6 * side, s.threads,
       [&](int row) {
-        const int face = row / side, j = row % side;
-        const Taps ty = texelTaps(j, grid);
-        std::vector<SolidAngleSample> omegaSamples;
-        std::vector<DirectionSample> dirSamples;
         for (int i = 0; i < side; ++i) {
-          const Taps tx = texelTaps(i, grid);
-          omegaSamples.clear();
-          dirSamples.clear();
-          double sumW = 0.0, sumR0 = 0.0, minR0 = field.rMax;
-          for (int b = 0; b < ty.count; ++b)
-            for (int a = 0; a < tx.count; ++a) {
-              const double g = tx.weight[a] * ty.weight[b];
-              const std::size_t d = (static_cast<std::size_t>(face) * grid.side + ty.index[b]) * grid.side + tx.index[a];
-              sumW += g;
-              sumR0 += g * hi.r0[d];
-              minR0 = std::min(minR0, static_cast<double>(hi.r0[d]));
-            }
-          const double r0 = sumR0 / sumW;
-          for (int b = 0; b < ty.count; ++b)
-            for (int a = 0; a < tx.count; ++a) {
-              const double g = tx.weight[a] * ty.weight[b];
-              const std::size_t d = (static_cast<std::size_t>(face) * grid.side + ty.index[b]) * grid.side + tx.index[a];
-              for (int q = 0; q < k; ++q) {
-                const std::size_t at = d * k + q;
-                const double r = hi.r[at], omega = hi.omega[at];
-                omegaSamples.push_back({r, omega, field.fade(r, r0), g * occlusionSensitivity(omega)});
-                if (omega > 0.0) dirSamples.push_back({r * hi.dir[d], glm::dvec3(hi.upsilon[at]), g * omega});
-              }
-            }
-          // Feasible (Omega <= 4 pi) from the smallest r0 around. Where the shader's interpolated r0
-          // is lower still, Omega may reach 4 pi, but continuously: the evaluator clamps 1/D to
-          // 4 pi and counts D <= 0 as 4 pi. Demanding more (down to 0.8 r0) doubled the sphere's error.
-          const SolidAngleModel m = fitSolidAngle(omegaSamples, minR0, field.rMax);
-          const glm::dvec3 w = glm::normalize(faceDirection(face, borderedTexelCentre(i, n), borderedTexelCentre(j, n)));
-          glm::dvec3 c0 = fitDirectionCentre(dirSamples, glm::dvec3(0.0));
-          const double along = glm::dot(c0, w), limit = 0.9 * r0;
-          if (along > limit) c0 -= (along - limit) * w;
-          const std::size_t t = (static_cast<std::size_t>(face) * side + j) * side + i;
-          field.occlusion[t * 4 + 0] = static_cast<float>(m.a);
-          field.occlusion[t * 4 + 1] = static_cast<float>(m.b);
-          field.occlusion[t * 4 + 2] = static_cast<float>(m.c);
-          field.occlusion[t * 4 + 3] = static_cast<float>(r0);
-          for (int c = 0; c < 3; ++c) field.centroid[t * 3 + c] = static_cast<float>(c0[c]);
+          const TexelFit t = fitter.fit(row, i, true);
+          const std::size_t at = static_cast<std::size_t>(row) * side + i;  // row = face * side + j
+          field.occlusion[at * 4 + 0] = static_cast<float>(t.model.a);
+          field.occlusion[at * 4 + 1] = static_cast<float>(t.model.b);
+          field.occlusion[at * 4 + 2] = static_cast<float>(t.model.c);
+          field.occlusion[at * 4 + 3] = static_cast<float>(t.r0);
+          for (int c = 0; c < 3; ++c) field.centroid[at * 3 + c] = static_cast<float>(t.c0[c]);
         }
       },
       [&](double f) {

@@ -11,8 +11,14 @@
 // occluder parts beyond R do not count. For a sphere the directions within R still form a cap, so
 // the field of a sphere is exact up to the fits. The evaluator then returns T_LUT[Omega, n.Upsilon],
 // the cosine-weighted hemisphere integral of that cap. Beyond rMax = bounding radius + R nothing
-// is within R, so the field ends there; the far fade runs from nearDistance to farDistance R
-// beyond the hull (RadialField::fade).
+// is within R, so the field ends there. The far fade (RadialField::fade) runs over a window given
+// in R beyond the hull; how far a shadow reaches past the hull depends on the shape (R below a
+// box's face, R / sin(elevation) along a direction grazing a plane), so by default the bake fits a
+// third of the texels with each of a few windows ((0.5, 1.5), (0.7, 1.2), (1.5, 2.5), (3.75, 4) R)
+// and keeps the one with the smallest residual. Measured at random points within the field
+// (RMSE against the reference, N = 16): the compact windows win on a box (0.025 against 0.034) and
+// the bunny, the one ending at the cull radius on a sphere (0.008 against 0.012) and a plane
+// (0.086 against 0.17).
 //
 // Steps: centre = surface centroid; r0(w) from the hull's support planes (HullRadius.h). For each
 // direction of a supersampled cube map (2N per face side, plus a margin beyond the face edges for
