@@ -9,5 +9,6 @@ void addRenderCommand(CLI::App& app);
 void addDemoCommand(CLI::App& app);
 void addReferenceCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
+void addBakeCommand(CLI::App& app);
 
 }  // namespace aokit::cli

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   aokit::cli::addReferenceCommand(app);
   aokit::cli::addBenchCommand(app);
   aokit::cli::addDemoCommand(app);
+  aokit::cli::addBakeCommand(app);
   aokit::installInterruptHandler();
   if (argc > 1 && argv[1][0] != '-') {
     std::string known;

@@ -18,6 +18,7 @@ const std::vector<std::pair<std::string, Builder>>& registry() {
       {"sphere-offscreen", [](const BuiltinOptions&) { return makeSphereOffscreenScene(); }},
       {"cubes", [](const BuiltinOptions& o) { return makeCubesScene(o.cubeCount, o.seed); }},
       {"tank", [](const BuiltinOptions&) { return makeTankScene(); }},
+      {"stack", [](const BuiltinOptions&) { return makeStackScene(); }},
       {"corridor", [](const BuiltinOptions&) { return makeCorridorScene(); }},
       {"room", [](const BuiltinOptions&) { return makeRoomScene(0.85f); }},
       {"room-dark", [](const BuiltinOptions&) { return makeRoomScene(0.15f); }},

@@ -12,6 +12,7 @@ Scene makeSpherePlaneScene();
 Scene makeSphereOffscreenScene();
 Scene makeCubesScene(int count, std::uint32_t seed);
 Scene makeTankScene();
+Scene makeStackScene();
 Scene makeCorridorScene();
 Scene makeRoomScene(float albedo);
 Scene makeAnimatedScene();

@@ -1,0 +1,51 @@
+#pragma once
+// One occluder's baked data, whatever its kind: the field, its self-occlusion, and what it was
+// baked from (the header of a field file, FieldFile.h).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/TriangleMesh.h"
+#include "fields/FieldSettings.h"
+#include "fields/GridField.h"
+#include "fields/RadialField.h"
+
+namespace aokit {
+
+struct FieldBakeInfo {
+  FieldKind kind = FieldKind::Cube;
+  int resolution = 0;                 // resolved (never 0 = auto here)
+  double radius = 0.0;                // AO radius R, occluder units
+  Falloff falloff = Falloff::Binary;
+  double nearDistance = 0.0, farDistance = 0.0;  // cube
+  int supersampling = 0, radialSamples = 0, raysPerSample = 0;  // cube
+  int gridRays = 0;                   // grid
+  bool blur = false;                  // grid
+  double fadeCells = 0.0, padding = 0.0;  // grid
+  int selfOcclusionRays = 0;          // 0: no per-vertex self-occlusion baked
+  std::uint64_t seed = 0;
+  std::uint64_t meshHash = 0;         // meshContentHash of the occluder
+  std::uint32_t vertexCount = 0, triangleCount = 0;
+  double bakeSeconds = 0.0;           // informational, not part of the cache key
+};
+
+struct BakedField {
+  FieldBakeInfo info;
+  RadialField radial;                 // kind cube
+  GridField grid;                     // kinds grid6, grid4
+  std::vector<float> vertexOcclusion; // per vertex, empty unless info.selfOcclusionRays > 0
+
+  // Bytes of field data (what a GPU port uploads) plus the per-vertex floats.
+  std::size_t memoryBytes() const {
+    return radial.memoryBytes() + grid.memoryBytes() + vertexOcclusion.size() * sizeof(float);
+  }
+};
+
+// The bake settings of `s` for this mesh, resolution and R (meshHash and counts filled in).
+FieldBakeInfo makeBakeInfo(const FieldSettings& s, int resolution, double radius, Falloff falloff,
+                           const TriangleMesh& mesh);
+
+// Field bytes for a kind and resolution (no self-occlusion): the figure the node reports.
+std::size_t fieldMemoryBytes(FieldKind kind, int resolution);
+
+}  // namespace aokit

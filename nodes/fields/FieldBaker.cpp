@@ -1,0 +1,43 @@
+#include "fields/FieldBaker.h"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "fields/FieldResolution.h"
+#include "fields/GridFieldBake.h"
+#include "fields/RadialFieldBake.h"
+#include "fields/SelfOcclusionBake.h"
+
+namespace aokit {
+
+BakedField bakeField(const TriangleMesh& mesh, const FieldSettings& settings, double radius, Falloff falloff,
+                     const std::function<void(double)>& progress) {
+  validate(settings);
+  if (!(radius > 0.0) || !std::isfinite(radius)) throw std::invalid_argument("field bake: radius must be positive and finite");
+  mesh.validate();
+  const auto start = std::chrono::steady_clock::now();
+  FieldSettings s = settings;
+  s.resolution = resolveFieldResolution(settings, mesh, radius);
+
+  // Progress: the field takes most of the time; self-occlusion the last part.
+  const double fieldShare = s.selfOcclusion ? 0.8 : 1.0;
+  auto part = [&](double from, double share) {
+    return [&progress, from, share](double f) {
+      if (progress) progress(from + share * f);
+    };
+  };
+  BakedField out;
+  out.info = makeBakeInfo(s, s.resolution, radius, falloff, mesh);
+  if (s.kind == FieldKind::Cube)
+    out.radial = bakeRadialField(mesh, s, radius, falloff, part(0.0, fieldShare));
+  else
+    out.grid = bakeGridField(mesh, s, radius, falloff, part(0.0, fieldShare));
+  if (s.selfOcclusion)
+    out.vertexOcclusion = bakeVertexOcclusion(mesh, radius, falloff, s.selfOcclusionRays, s.threads, s.seed,
+                                              part(fieldShare, 1.0 - fieldShare));
+  out.info.bakeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace aokit

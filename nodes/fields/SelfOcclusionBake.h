@@ -1,0 +1,20 @@
+#pragma once
+// Per-vertex ambient occlusion of an occluder by itself, for the scene's R and falloff: the part
+// of the picture a field cannot give (seed 000's figures show fields plus precomputed self-shadows).
+// Computed by the reference's own estimator (reference/AOReference.h) from each vertex with its
+// normal, so it is the same quantity the reference measures, restricted to this one mesh.
+#include <functional>
+#include <vector>
+
+#include "core/AOScene.h"
+#include "core/TriangleMesh.h"
+
+namespace aokit {
+
+// One value in [0, 1] per vertex (mesh.positions order). Vertices without normals get them
+// computed (area-weighted). progress may throw to cancel.
+std::vector<float> bakeVertexOcclusion(const TriangleMesh& mesh, double radius, Falloff falloff, int rays,
+                                       int threads = 0, std::uint64_t seed = 1,
+                                       const std::function<void(double)>& progress = {});
+
+}  // namespace aokit
