@@ -28,6 +28,7 @@ GLFormat glFormat(TexFormat f) {
     case TexFormat::RGBA16F: return {GL_RGBA16F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, 8};
     case TexFormat::R32F: return {GL_R32F, GL_RED, GL_FLOAT, 1, VTK_FLOAT, 4};
     case TexFormat::RG32F: return {GL_RG32F, GL_RG, GL_FLOAT, 2, VTK_FLOAT, 8};
+    case TexFormat::RGB32F: return {GL_RGB32F, GL_RGB, GL_FLOAT, 3, VTK_FLOAT, 12};
     case TexFormat::RGBA32F: return {GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, 16};
     case TexFormat::R32UI: return {GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, 1, VTK_UNSIGNED_INT, 4};
     case TexFormat::RG32UI: return {GL_RG32UI, GL_RG_INTEGER, GL_UNSIGNED_INT, 2, VTK_UNSIGNED_INT, 8};
@@ -120,6 +121,7 @@ std::size_t textureBytes(const vtkTextureObject* t) {
     case GL_RGBA8: case GL_R32F: case GL_R32UI: case GL_RG16F: case GL_RGB10_A2: case GL_DEPTH_COMPONENT32F: perTexel = 4; break;
     case GL_R16F: perTexel = 2; break;
     case GL_RGBA16F: case GL_RG32F: case GL_RG32UI: perTexel = 8; break;
+    case GL_RGB32F: perTexel = 12; break;
     case GL_RGBA32F: case GL_RGBA32UI: perTexel = 16; break;
     default: perTexel = static_cast<std::size_t>(tex->GetComponents()) * 4; break;
   }

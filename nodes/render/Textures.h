@@ -20,6 +20,7 @@ enum class TexFormat {
   RGBA16F,
   R32F,
   RG32F,
+  RGB32F,    // for buffer textures mostly (3-float records); not colour-renderable
   RGBA32F,
   R32UI,     // integer: sampled with usampler*, texelFetch only
   RG32UI,

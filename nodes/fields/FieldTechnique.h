@@ -1,0 +1,103 @@
+#pragma once
+// The AO-field occluder node (seeds 000, 001, 002) as an AOScene technique.
+//
+// prepare(): one field per distinct occluder mesh (and uniform scale: FieldInstances.h) for the
+//   scene's R and falloff, in the mesh's units: from a field file the scene names on the object
+//   (FieldAttachment.h), else from the bake cache (FieldCache.h, keyed by mesh content and bake
+//   settings), else baked with Embree. The bench times this as prepare_ms.
+// attach(): installs a FieldPass (FieldPass.h) with those fields; textures upload at its first frame.
+// update(): when the scene's revision changed, the occluders' world matrices are handed to the
+//   pass (a few floats each: no re-bake for moved or rotated occluders); a new instance, a
+//   rescaled one, a replaced mesh, or a new R or falloff plans and bakes again what is missing.
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <vtkSmartPointer.h>
+
+#include "core/AOTechnique.h"
+#include "fields/FieldInstances.h"
+#include "fields/FieldPass.h"
+#include "fields/FieldPassSettings.h"
+#include "fields/FieldSettings.h"
+
+class vtkRenderPass;
+
+namespace aokit {
+
+struct FieldTechniqueSettings {
+  bool autoKind = true;           //!< per occluder: grid6 when flat, else cube (FieldInstances.h);
+                                  //!< false: every field of field.kind
+  FieldSettings field;            //!< bake settings and evaluator constants; field.radius is in world
+                                  //!< units here (0 = the scene's R), field.falloff empty = the scene's
+  FieldPassSettings pass;         //!< how the pass runs; its evaluator constants come from `field`
+  bool cache = true;              //!< keep bakes in the cache folder (FieldCache.h) and reuse them
+  std::string cacheDirectory;     //!< empty: FieldCache's default ($AOKIT_CACHE_DIR, ...)
+};
+
+// Throws std::invalid_argument (one line) on the first bad field.
+void validate(const FieldTechniqueSettings& s);
+
+// What the last prepare (or re-plan) did.
+struct FieldPrepareReport {
+  int fields = 0, occluders = 0;
+  int baked = 0, fromCache = 0, fromFile = 0;
+  double bakeSeconds = 0.0;        // summed over the fields baked now
+  std::vector<std::string> warnings;
+};
+
+class FieldTechnique : public AOTechnique {
+ public:
+  // Throws std::invalid_argument (one line) on bad settings.
+  explicit FieldTechnique(FieldTechniqueSettings settings = {});
+  std::string name() const override { return "field"; }
+  std::optional<Falloff> falloffOverride() const override { return settings_.field.falloff; }
+  // Throws std::runtime_error on a bad field file, an Embree error, or a cancelled bake.
+  void prepare(AOScene& scene, const std::function<void(double)>& progress) override;
+  void attach(vtkRenderer* renderer, AOScene& scene) override;
+  void detach(vtkRenderer* renderer) override;
+  void update(vtkRenderer* renderer, AOScene& scene) override;
+  // The pass's GPU bytes once attached (G-buffer, targets, field data, tables), else the fields'.
+  std::size_t memoryBytes() const override;
+  bool readAO(vtkRenderer* renderer, std::vector<float>& ao) override;
+  void setStageTiming(bool on) override;
+  StageTimes stageTimes() override;
+
+  const FieldTechniqueSettings& settings() const { return settings_; }
+  const std::vector<std::shared_ptr<const BakedField>>& fields() const { return fields_; }
+  const std::vector<FieldOccluder>& occluders() const { return occluders_; }
+  // Exact bytes of the field data ((N+2)^2 x 6 x 7 x 4 per cube field, ...).
+  std::size_t fieldBytes() const;
+  const FieldPrepareReport& report() const { return report_; }
+  FieldPass* pass() const { return pass_; }
+
+ private:
+  void plan(AOScene& scene, const std::vector<GeometryInstance>& instances,
+            const std::function<void(double)>& progress);
+  std::shared_ptr<const BakedField> obtain(const PlannedField& f, const std::function<void(double)>& progress);
+  bool place(const std::vector<GeometryInstance>& instances);
+
+  FieldTechniqueSettings settings_;
+  double radius_ = 0.0;              // world R the fields were planned for
+  Falloff falloff_{};
+  FieldPlan plan_;
+  std::vector<const TriangleMesh*> plannedMesh_;  // per planned occluder: the Geometry's mesh
+  std::vector<double> plannedScale_;              // per planned occluder: scale of O
+  std::map<std::uint32_t, std::size_t> byInstance_;
+  // Baked fields by (mesh, R in mesh units, file), kept across re-plans; the mesh is held so its
+  // address cannot be reused by another.
+  std::map<std::tuple<const TriangleMesh*, double, std::string>,
+           std::pair<std::shared_ptr<const TriangleMesh>, std::shared_ptr<const BakedField>>>
+      baked_;
+  std::vector<std::shared_ptr<const BakedField>> fields_;
+  std::vector<FieldOccluder> occluders_;
+  FieldPrepareReport report_;
+  std::uint64_t revision_ = 0;
+  vtkSmartPointer<FieldPass> pass_;
+  vtkSmartPointer<vtkRenderPass> previous_;
+  bool timing_ = false;
+};
+
+}  // namespace aokit
