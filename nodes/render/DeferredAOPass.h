@@ -12,7 +12,8 @@
 //      eqs. 5-8: Wendland domain kernel; position, normal and AO range kernels): a horizontal
 //      pass to a (screen width x target height) target, the vertical taps inside the combine.
 //   4. combine: colour * (1 - AO) where the prop receives AO, depth written back; or the AO alone
-//      (ReadAO), or a debug view.
+//      (ReadAO), or a debug view. With baked AO on, each pixel's per-vertex baked AO (G-buffer) is
+//      combined first: AO = 1 - (1 - baked)(1 - AO).
 // Each stage is timed with GPU timestamps when timing is on (GetStageTimes()): "gbuffer", the
 // family's stages, "upsample" (separable mode), "combine". GL state is restored by scoped guards;
 // a program that fails to compile is reported once and the frame is shown without AO.
@@ -66,6 +67,7 @@ struct DeferredConfig {
   int aoChannels = 1;       //!< 1: occlusion in .r; 4: 1 - W per colour in .rgb, 1 - O in .a
   double guard = 0.0;       //!< G-buffer guard band, fraction of the screen on each side, 0..1
   bool instanceIds = false; //!< G-buffer instance-id target (GBufferPass::SetInstanceIds)
+  bool bakedAO = false;     //!< combine per-vertex baked AO (render/BakedAO.h): 1 - (1 - baked)(1 - AO)
   double radius = 1.0;      //!< the AO radius R (world units): position kernel, depth debug view
   UpsampleSettings upsample;
   DeferredDebugView debugView = DeferredDebugView::None;
