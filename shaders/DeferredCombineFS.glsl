@@ -16,6 +16,7 @@ in vec2 texCoord;
 uniform sampler2D aoResult;   // the family's AO at the target size, 0 on background
 uniform sampler2D aoResultZ;  // view z at the target size, +1 on background
 uniform sampler2D aoRows;     // AO_UPSAMPLE 2: the horizontal pass (screen width x target rows)
+uniform sampler2D aoBaked;    // AO_BAKED: per-vertex baked AO from the G-buffer (full resolution)
 uniform int aoDownsample;
 uniform float aoTolerance;
 uniform float aoRadius;
@@ -107,6 +108,10 @@ void main()
   bool receives = covered && (aoFlags(g) & AO_FLAG_RECEIVES) != 0;
   vec3 p = aoViewPosition(g);
   AO_TYPE ao = receives ? aoAt(pix, g, p) : AO_TYPE(0.0);
+#if AO_BAKED
+  // Baked and dynamic occlusion as independent: 1 - A = (1 - baked)(1 - AO).
+  ao = receives ? AO_TYPE(1.0) - (AO_TYPE(1.0) - ao) * (1.0 - texelFetch(aoBaked, g, 0).r) : ao;
+#endif
 #if AO_OUTPUT
 #if AO_TRANSFER
   gl_FragData[0] = vec4(ao, covered ? 1.0 : 0.0);

@@ -1,4 +1,4 @@
-  // GBufferPass: written at the end of the fragment shader (@FLAGS@ and @IDS@ become attachment
+  // GBufferPass: written at the end of the fragment shader (@FLAGS@, @BAKED@ and @IDS@ become attachment
   // numbers: VTK declares the outputs it finds as literal gl_FragData[n]). The normal VTK shaded with is turned
   // by gl_FrontFacing, which follows the winding; the facet's own normal (from the derivatives
   // of the view-space position) says which side faces the eye. Turning the shading normal to that
@@ -19,6 +19,9 @@
   // Every target is written with alpha 1: VTK keeps blending on for opaque geometry, and alpha 1
   // makes it a plain overwrite.
   gl_FragData[@FLAGS@] = vec4(aokitFlags, 0.0, 0.0, 1.0);  // 1 covered + 2 receives + 4 casts, / 255
+#if AOKIT_GBUFFER_BAKED
+  gl_FragData[@BAKED@] = vec4(AOKIT_GBUFFER_BAKED_VALUE, 0.0, 0.0, 1.0);
+#endif
 #if AOKIT_GBUFFER_IDS
   gl_FragData[@IDS@] = vec4(aokitInstanceId, 0.0, 0.0, 1.0);
 #endif

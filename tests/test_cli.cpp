@@ -78,7 +78,7 @@ TEST_F(CliErrors, UnknownOptionsAndScenes) {
 
 TEST_F(CliErrors, MissingAndMalformedMeshes) {
   expectError("render --scene " + out("missing.off") + " -o " + out("a.png"), "missing.off");
-  const std::string garbage = write("garbage.off", std::string("\x01\x02\xff\xfe not a mesh", 17));
+  const std::string garbage = write("garbage.off", std::string("\x01\x02\xff\xfe not a mesh"));
   expectError("render --scene " + garbage + " -o " + out("a.png"), "garbage.off");
   const std::string empty = write("empty.obj", "");
   expectError("render --scene " + empty + " -o " + out("a.png"), "empty.obj");

@@ -144,3 +144,16 @@ TEST(Metrics, MeanStandardErrorIsRmsOverCovered) {
   std::fill(none.covered.begin(), none.covered.end(), 0);
   EXPECT_THROW(meanStandardError(none), std::invalid_argument);
 }
+
+TEST(Metrics, SsimIsOnVisibleIntensitySoTinyBiasesOnOpenFloorsStayTiny) {
+  // An open floor: the reference says 0 everywhere, the method 0.01. On occlusion itself the
+  // luminance term would be C1 / (0.01^2 + C1) = 0.5; on intensity 1 - AO it is nearly 1.
+  AOBuffer ref, test;
+  ref.resize(32, 32);
+  test.resize(32, 32);
+  for (std::size_t i = 0; i < ref.pixelCount(); ++i) {
+    ref.covered[i] = test.covered[i] = 1;
+    test.ao[i] = 0.01f;
+  }
+  EXPECT_GT(compareAO(test, ref).ssim, 0.999);
+}

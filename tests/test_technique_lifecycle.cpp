@@ -29,6 +29,13 @@ using namespace aokit;
 
 namespace {
 
+// AddressSanitizer holds freed memory in quarantine: resident memory says nothing there.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kMemoryIsMeaningful = false;
+#else
+constexpr bool kMemoryIsMeaningful = true;
+#endif
+
 struct GLObjects {
   int textures = 0, framebuffers = 0, programs = 0, shaders = 0, buffers = 0, vertexArrays = 0, queries = 0;
   // Queries may grow by two per mapper: each VTK mapper starts a render timer every few frames.
@@ -116,7 +123,7 @@ TEST(TechniqueLifecycle, HundredAttachDetachCyclesLeaveNothingBehind) {
     std::printf("%s: after 10 cycles %s, %.1f MB; 100 more: %s, %.1f MB\n", m.name.c_str(), describe(first).c_str(),
                 firstMB, describe(last).c_str(), lastMB);
     EXPECT_TRUE(last.sameAs(first, 2)) << m.name << ": " << describe(first) << " -> " << describe(last);
-    EXPECT_LT(lastMB - firstMB, 5.0) << m.name;
+    if (kMemoryIsMeaningful) EXPECT_LT(lastMB - firstMB, 5.0) << m.name;
   }
 }
 
@@ -135,6 +142,6 @@ TEST(TechniqueLifecycle, ABenchCurveTwiceOverDoesNotGrow) {
     std::printf("%s curve (%zu settings): %s, %.1f MB -> %s, %.1f MB\n", m.name.c_str(), m.benchSettings.size(),
                 describe(first).c_str(), firstMB, describe(last).c_str(), lastMB);
     EXPECT_TRUE(last.sameAs(first, 2)) << m.name << ": " << describe(first) << " -> " << describe(last);
-    EXPECT_LT(lastMB - firstMB, 5.0) << m.name;
+    if (kMemoryIsMeaningful) EXPECT_LT(lastMB - firstMB, 5.0) << m.name;
   }
 }

@@ -15,6 +15,11 @@
 #include "headless/FrameCapture.h"
 #include "headless/SceneView.h"
 #include "render/StageTimer.h"
+#include "render/TimedPass.h"
+
+#include <vtkNew.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkRenderer.h>
 
 namespace aokit {
 
@@ -40,13 +45,22 @@ void benchScene(Scene& scene, const BenchConfig& cfg, const std::vector<std::pai
   out.references.push_back(references.summary(cfg.measureRawThroughput));
   if (cfg.onReference) cfg.onReference(scene, surfaces, references.get(AOQuantity::Occlusion, scene.root->falloff()).ao);
 
+  // The base frame: the same scene in a second window, without the technique, its own GPU time
+  // measured as one stage ("scene") to be set against the method's scene-drawing stage.
   SceneView base(scene, cfg.width, cfg.height);
   base.renderer.setApplyTechnique(false);
   base.renderer.sync();
+  vtkNew<TimedPass> baseTimer;
+  vtkNew<vtkRenderStepsPass> baseSteps;
+  baseTimer->SetDelegatePass(baseSteps);
+  baseTimer->SetStageName("scene");
+  baseTimer->SetStageTiming(true);
+  base.window.renderer()->SetPass(baseTimer);
   auto baseFrame = [&] {
     base.renderer.sync();
     base.window.render();
     base.window.finish();
+    return baseTimer->GetStageTimes();
   };
 
   Progress progress("bench " + scene.name, cfg.progress);
@@ -69,21 +83,34 @@ void benchScene(Scene& scene, const BenchConfig& cfg, const std::vector<std::pai
     scene.root->setTechnique(technique);
     view.renderer.setShadingMode(ShadingMode::Lit);
     view.renderer.sync();
-    const PairedTiming timing = timePairs(
-        baseFrame,
-        [&] {
-          view.renderer.sync();
-          view.window.render();
-          view.window.finish();
-          return technique ? technique->stageTimes() : StageTimes{};
-        },
-        cfg.warmup, cfg.frames);
-    row.baseMs = timing.baseMs;
-    row.frameMs = timing.frameMs;
-    row.aoMs = timing.aoMs;
-    row.aoQ1Ms = timing.aoQ1Ms;
-    row.aoQ3Ms = timing.aoQ3Ms;
-    row.stages = formatStageTimes(timing.stages);
+    if (technique) {
+      const PairedTiming timing = timePairs(
+          baseFrame,
+          [&] {
+            view.renderer.sync();
+            view.window.render();
+            view.window.finish();
+            return technique->stageTimes();
+          },
+          cfg.warmup, cfg.frames);
+      row.baseMs = timing.baseMs;
+      row.frameMs = timing.frameMs;
+      row.aoMs = timing.aoMs;
+      row.aoQ1Ms = timing.aoQ1Ms;
+      row.aoQ3Ms = timing.aoQ3Ms;
+      row.stages = formatStageTimes(timing.stages);
+    } else {
+      // The base frame itself: no method, nothing added (a difference of the frame with itself
+      // would only measure the noise).
+      for (int w = 0; w < cfg.warmup; ++w) baseFrame();
+      std::vector<double> ms;
+      for (int k = 0; k < cfg.frames; ++k) {
+        const auto t0 = std::chrono::steady_clock::now();
+        baseFrame();
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      }
+      row.baseMs = row.frameMs = quantile(ms, 0.5);
+    }
     if (technique) technique->setStageTiming(false);
 
     const AOQuantity quantity = technique ? technique->quantity() : AOQuantity::Occlusion;

@@ -25,7 +25,7 @@ double timed(F&& f) {
 }
 }  // namespace
 
-PairedTiming timePairs(const std::function<void()>& baseFrame, const std::function<StageTimes()>& methodFrame,
+PairedTiming timePairs(const std::function<StageTimes()>& baseFrame, const std::function<StageTimes()>& methodFrame,
                        int warmup, int pairs) {
   if (pairs < 1 || warmup < 0) throw std::invalid_argument("timePairs: need at least one timed pair");
   for (int i = 0; i < warmup; ++i) {
@@ -35,12 +35,15 @@ PairedTiming timePairs(const std::function<void()>& baseFrame, const std::functi
   std::vector<double> base, method, diff;
   std::vector<std::pair<std::string, std::vector<double>>> stages;
   for (int i = 0; i < pairs; ++i) {
-    const double b = timed(baseFrame);
-    StageTimes st;
+    StageTimes bs, st;
+    const double b = timed([&] { bs = baseFrame(); });
     const double m = timed([&] { st = methodFrame(); });
     base.push_back(b);
     method.push_back(m);
     diff.push_back(m - b);
+    double baseGpu = 0.0;
+    for (const auto& s : bs) baseGpu += s.ms;
+    if (!st.empty() && !bs.empty()) st.front().ms -= baseGpu;
     for (const auto& s : st) {
       auto it = std::find_if(stages.begin(), stages.end(), [&](const auto& e) { return e.first == s.name; });
       if (it == stages.end()) it = stages.insert(stages.end(), {s.name, {}});

@@ -3,7 +3,9 @@
 // frame, base, method, ... each ended by glFinish, so both see the same state of a busy machine.
 // The AO time is the median of the paired differences (method - base), with its quartiles: never
 // clamped, so a difference inside the spread reads as such. GPU stage times (when the method
-// reports them) are the medians over the timed method frames, per stage.
+// reports them) are the medians over the timed method frames, per stage; the method's first stage,
+// which draws the scene (a G-buffer, or the whole of a pass that is timed as one stage), is taken
+// minus the base frame's own GPU time in the same pair, so that the stages add up to the AO time.
 #include <functional>
 
 #include "core/AOTechnique.h"
@@ -18,8 +20,9 @@ struct PairedTiming {
 };
 
 // Runs `warmup` untimed pairs, then `pairs` timed ones. Each callback must render one frame and
-// finish it; methodFrame returns that frame's stage times (empty if it has none).
-PairedTiming timePairs(const std::function<void()>& baseFrame, const std::function<StageTimes()>& methodFrame,
+// finish it, and returns that frame's GPU stage times (empty if it has none; the base frame's are
+// summed into its GPU time).
+PairedTiming timePairs(const std::function<StageTimes()>& baseFrame, const std::function<StageTimes()>& methodFrame,
                        int warmup, int pairs);
 
 // The q-quantile (0..1) of the values by linear interpolation between order statistics (the

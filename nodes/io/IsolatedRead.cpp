@@ -42,6 +42,7 @@ class Reader {
   }
   bool get(void* data, std::size_t bytes) {
     if (in_.size() - pos_ < bytes) return false;
+    if (bytes == 0) return true;  // an empty vector's data() may be null: memcpy must not see it
     std::memcpy(data, in_.data() + pos_, bytes);
     pos_ += bytes;
     return true;

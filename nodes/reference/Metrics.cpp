@@ -47,7 +47,12 @@ AOErrorMetrics compareAO(const AOBuffer& test, const AOBuffer& reference) {
   const std::size_t rank = static_cast<std::size_t>(std::ceil(0.99 * m.pixels));  // 1-based, >= 1
   std::nth_element(absErr.begin(), absErr.begin() + (rank - 1), absErr.end());
   m.p99AbsError = absErr[rank - 1];
-  m.ssim = maskedSSIM(test.ao, reference.ao, both, test.width, test.height);
+  std::vector<float> a(n), b(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    a[i] = 1.0f - test.ao[i];
+    b[i] = 1.0f - reference.ao[i];
+  }
+  m.ssim = maskedSSIM(a, b, both, test.width, test.height);
   return m;
 }
 

@@ -15,7 +15,8 @@ struct AOErrorMetrics {
   // absolute errors (an actual error value, never interpolated).
   double p99AbsError = 0.0;
   // Mean SSIM (Wang et al. 2004: C1 = 0.01^2, C2 = 0.03^2 for data range 1, 11x11 Gaussian window
-  // with sigma 1.5) over the compared pixels. Masked: a window's means, variances and covariance
+  // with sigma 1.5) over the compared pixels, on visible intensity 1 - AO (what a viewer sees; on
+  // occlusion itself, the near-zero means of open floors made tiny biases dominate the luminance term). Masked: a window's means, variances and covariance
   // use only its pixels covered in both buffers, with the Gaussian weights renormalized over them;
   // pixels outside the image count as uncovered.
   double ssim = 0.0;

@@ -117,6 +117,7 @@ std::string DeferredAOPass::CombineDefines(bool outputAO) const {
          "\n#define AO_NORMAL_KERNEL " + std::to_string(c.upsample.normalKernel ? 1 : 0) +
          "\n#define AO_RANGE_KERNEL " + std::to_string(c.upsample.aoRange > 0.0 ? 1 : 0) +
          "\n#define AO_OUTPUT " + std::to_string(outputAO ? 1 : 0) +
+         "\n#define AO_BAKED " + std::to_string(c.bakedAO ? 1 : 0) +
          "\n#define AO_DEBUG_VIEW " + std::to_string(static_cast<int>(c.debugView)) + "\n";
 }
 
@@ -165,6 +166,7 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   validate(Frame.config);
   GBuffer->SetGuardBand(Frame.config.guard);
   GBuffer->SetInstanceIds(Frame.config.instanceIds);
+  GBuffer->SetBakedAO(Frame.config.bakedAO);
   Frame.renderer = r;
   Frame.renWin = renWin;
   Frame.state = state;
@@ -264,11 +266,12 @@ template <class Draw>
 bool DeferredAOPass::Combine(FullScreenStage& stage, bool outputAO, Draw&& draw) {
   vtkShaderProgram* p = stage.ready(Frame.renWin, CombineDefines(outputAO));
   if (!p) return false;
-  ActiveTextures inputs{Result, ZTarget, RowTarget.Get()};
+  ActiveTextures inputs{Result, ZTarget, RowTarget.Get(), GBuffer->GetBakedAOTexture()};
   Frame.bindCommon(p);
   p->SetUniformi("aoResult", Result->GetTextureUnit());
   p->SetUniformi("aoResultZ", ZTarget->GetTextureUnit());
   if (RowTarget) p->SetUniformi("aoRows", RowTarget->GetTextureUnit());
+  if (Frame.config.bakedAO) p->SetUniformi("aoBaked", GBuffer->GetBakedAOTexture()->GetTextureUnit());
   p->SetUniformi("aoDownsample", Frame.config.downsample);
   p->SetUniformf("aoTolerance", static_cast<float>(Frame.config.upsample.depthTolerance));
   p->SetUniformf("aoRadius", static_cast<float>(Frame.config.radius));

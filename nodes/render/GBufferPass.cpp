@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLError.h>
@@ -25,6 +26,7 @@
 #include "GBufferCopyFS.h"
 #include "GBufferOutputFS.h"
 #include "render/ActorKeys.h"
+#include "render/BakedAO.h"
 
 namespace aokit {
 
@@ -42,7 +44,8 @@ void GBufferPass::SetDelegatePass(vtkRenderPass* delegate) {
 void GBufferPass::DropTargets() {
   // The targets and the mappers' shaders change: drop the targets, and LayoutTime makes VTK
   // rebuild the shaders (GetShaderStageMTime).
-  ColorTexture = PositionTexture = NormalTexture = DepthTexture = FlagsTexture = InstanceIdTexture = nullptr;
+  ColorTexture = PositionTexture = NormalTexture = DepthTexture = FlagsTexture = BakedAOTexture =
+      InstanceIdTexture = nullptr;
   Framebuffer = nullptr;
   Width = Height = 0;
   LayoutTime.Modified();
@@ -52,6 +55,12 @@ void GBufferPass::DropTargets() {
 void GBufferPass::SetLean(bool on) {
   if (on == Lean) return;
   Lean = on;
+  DropTargets();
+}
+
+void GBufferPass::SetBakedAO(bool on) {
+  if (on == BakedAO) return;
+  BakedAO = on;
   DropTargets();
 }
 
@@ -122,6 +131,7 @@ void GBufferPass::Allocate(vtkOpenGLRenderWindow* renWin, int w, int h) {
       NormalTexture = makeTarget(renWin, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, w, h);
     }
     FlagsTexture = makeTarget(renWin, GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, VTK_UNSIGNED_CHAR, w, h);
+    if (BakedAO) BakedAOTexture = makeTarget(renWin, GL_R16F, GL_RED, GL_FLOAT, 1, VTK_FLOAT, w, h);
     if (InstanceIds) InstanceIdTexture = makeTarget(renWin, GL_R32F, GL_RED, GL_FLOAT, 1, VTK_FLOAT, w, h);
     DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
     DepthTexture->SetContext(renWin);
@@ -135,6 +145,7 @@ void GBufferPass::Allocate(vtkOpenGLRenderWindow* renWin, int w, int h) {
     if (PositionTexture) PositionTexture->Resize(w, h);
     NormalTexture->Resize(w, h);
     FlagsTexture->Resize(w, h);
+    if (BakedAOTexture) BakedAOTexture->Resize(w, h);
     if (InstanceIdTexture) InstanceIdTexture->Resize(w, h);
     DepthTexture->Resize(w, h);
   }
@@ -204,6 +215,7 @@ void GBufferPass::Render(const vtkRenderState* s) {
     Framebuffer->AddColorAttachment(2, NormalTexture);
   }
   Framebuffer->AddColorAttachment(FlagsAttachment(), FlagsTexture);
+  if (BakedAO) Framebuffer->AddColorAttachment(BakedAOAttachment(), BakedAOTexture);
   if (InstanceIds) Framebuffer->AddColorAttachment(Attachments() - 1, InstanceIdTexture);
   Framebuffer->AddDepthAttachment(DepthTexture);
   Framebuffer->ActivateDrawBuffers(Attachments());
@@ -259,30 +271,48 @@ void GBufferPass::CopyToFramebuffer(vtkOpenGLRenderWindow* renWin) {
   state->vtkglDepthFunc(GL_LEQUAL);
 }
 
-bool GBufferPass::PreReplaceShaderValues(std::string&, std::string&, std::string& fs, vtkAbstractMapper* mapper,
+bool GBufferPass::PreReplaceShaderValues(std::string& vs, std::string&, std::string& fs, vtkAbstractMapper* mapper,
                                          vtkProp*) {
   // Markers the mapper leaves alone: our declarations beside the outputs, our code last in main
   // (after texturing, which may rewrite the colour's alpha).
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper)) {
     vtkShaderProgram::Substitute(fs, "//VTK::Output::Dec", "//VTK::Output::Dec\n//AOKIT::GBuffer::Dec\n", false);
     vtkShaderProgram::Substitute(fs, "//VTK::Picking::Impl", "//VTK::Picking::Impl\n  //AOKIT::GBuffer::Impl\n", false);
+    if (BakedAO) {
+      // The baked value rides along as a vertex attribute. Where a mapper has no such array the
+      // attribute's current value is undefined (GL leaves it so after array draws): a per-prop
+      // uniform scales it to 0 there.
+      vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+                                   "//VTK::Normal::Dec\nin float aokitBakedAOMC;\nuniform float aokitBakedScale;\n"
+                                   "out float aokitBakedAOVSOutput;",
+                                   false);
+      vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+                                   "//VTK::Normal::Impl\n  aokitBakedAOVSOutput = aokitBakedScale * aokitBakedAOMC;", false);
+    }
   }
   return true;
 }
 
-bool GBufferPass::PostReplaceShaderValues(std::string&, std::string&, std::string& fs, vtkAbstractMapper* mapper,
-                                          vtkProp*) {
+bool GBufferPass::PostReplaceShaderValues(std::string& vs, std::string& gs, std::string& fs,
+                                          vtkAbstractMapper* mapper, vtkProp*) {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper)) return true;
+  // With a geometry shader (wide lines) VTK renames the fragment inputs to GSOut: the baked value
+  // does not pass through one, so such draws write 0.
+  const bool bakedInput = BakedAO && gs.empty() && vs.find("aokitBakedAOVSOutput") != std::string::npos;
   vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Dec",
-                               "uniform float aokitFlags;\nuniform float aokitInstanceId;\nuniform int aokitParallel;\n",
+                               std::string("uniform float aokitFlags;\nuniform float aokitInstanceId;\nuniform int "
+                                           "aokitParallel;\n") +
+                                   (bakedInput ? "in float aokitBakedAOVSOutput;\n" : ""),
                                false);
   std::string impl;
   if (fs.find("vertexVC") != std::string::npos && fs.find("normalVCVSOutput") != std::string::npos) {
     std::string code = GBufferOutputFS;
     vtkShaderProgram::Substitute(code, "@FLAGS@", std::to_string(FlagsAttachment()), true);
     vtkShaderProgram::Substitute(code, "@IDS@", std::to_string(Attachments() - 1), true);
+    vtkShaderProgram::Substitute(code, "@BAKED@", std::to_string(BakedAOAttachment()), true);
     impl = std::string("#define AOKIT_GBUFFER_LEAN ") + (Lean ? "1" : "0") + "\n#define AOKIT_GBUFFER_IDS " +
-           (InstanceIds ? "1" : "0") + "\n" + code;
+           (InstanceIds ? "1" : "0") + "\n#define AOKIT_GBUFFER_BAKED " + (BakedAO ? "1" : "0") +
+           "\n#define AOKIT_GBUFFER_BAKED_VALUE " + (bakedInput ? "aokitBakedAOVSOutput" : "0.0") + "\n" + code;
   } else {
     // Without the varyings (no lighting, no normals) the surface cannot be described: leave it
     // out of the G-buffer rather than write garbage.
@@ -301,6 +331,7 @@ bool GBufferPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapp
     program->SetUniformf("aokitFlags", flags / 255.0f);
     program->SetUniformf("aokitInstanceId", static_cast<float>(propInstanceId(prop)));
     program->SetUniformi("aokitParallel", Parallel ? 1 : 0);
+    if (BakedAO) program->SetUniformf("aokitBakedScale", hasBakedAO(vtkActor::SafeDownCast(prop)) ? 1.0f : 0.0f);
   }
   return true;
 }
@@ -347,7 +378,8 @@ bool GBufferPass::ReadFlags(std::vector<std::uint8_t>& flags) {
 std::size_t GBufferPass::MemoryBytes() const {
   // Colour RGBA8, depth 32F and flags R8, then position + normal (2 x RGBA32F) or the packed
   // normal, and ids.
-  return static_cast<std::size_t>(Width) * Height * (4 + 4 + 1 + (Lean ? 4 : 16 + 16) + (InstanceIds ? 4 : 0));
+  return static_cast<std::size_t>(Width) * Height *
+         (4 + 4 + 1 + (Lean ? 4 : 16 + 16) + (BakedAO ? 2 : 0) + (InstanceIds ? 4 : 0));
 }
 
 void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {
@@ -356,7 +388,8 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {
   if (CopyQuad && CopyQuad->Program) CopyQuad->Program->ReleaseGraphicsResources(w);
   delete CopyQuad;
   CopyQuad = nullptr;
-  ColorTexture = PositionTexture = NormalTexture = DepthTexture = FlagsTexture = InstanceIdTexture = nullptr;
+  ColorTexture = PositionTexture = NormalTexture = DepthTexture = FlagsTexture = BakedAOTexture =
+      InstanceIdTexture = nullptr;
   Framebuffer = nullptr;
   Width = Height = GuardX = GuardY = 0;
 }

@@ -6,8 +6,9 @@
 //                      single-sided sheets and inconsistent winding included),
 //   flags    R8        the prop's AO flags: (1 covered + 2 receives + 4 casts) / 255 (ActorKeys.h),
 //   depth    32F       window depth,
-// plus, with SetInstanceIds(true), an R32F target holding each pixel's instance id (ActorKeys.h;
-// exact up to 2^24, 0 for untagged props and background).
+// plus, with SetBakedAO(true), an R16F target holding the per-vertex AO baked into the props that
+// carry one (render/BakedAO.h; 0 elsewhere), and with SetInstanceIds(true), an R32F target holding
+// each pixel's instance id (ActorKeys.h; exact up to 2^24, 0 for untagged props and background).
 // Then it copies colour and depth to the framebuffer it was called with, so it can stand alone
 // in a pipeline. AO passes read its textures; the reference reads them back to the CPU.
 // Positions are 32-bit floats (vtkSSAOPass uses 16-bit): the reference needs them exact.
@@ -51,6 +52,9 @@ class GBufferPass : public vtkOpenGLRenderPass {
   // Lean layout (see above); takes effect at the next Render (targets are rebuilt).
   void SetLean(bool on);
   bool GetLean() const { return Lean; }
+  // Baked-AO target (see above); takes effect at the next Render (targets are rebuilt).
+  void SetBakedAO(bool on);
+  bool GetBakedAO() const { return BakedAO; }
   // Instance-id target (see above); takes effect at the next Render (targets are rebuilt).
   void SetInstanceIds(bool on);
   bool GetInstanceIds() const { return InstanceIds; }
@@ -78,6 +82,7 @@ class GBufferPass : public vtkOpenGLRenderPass {
   vtkTextureObject* GetNormalTexture() const { return NormalTexture; }      // packed when lean
   vtkTextureObject* GetDepthTexture() const { return DepthTexture; }
   vtkTextureObject* GetFlagsTexture() const { return FlagsTexture; }
+  vtkTextureObject* GetBakedAOTexture() const { return BakedAOTexture; }  // null unless enabled
   vtkTextureObject* GetInstanceIdTexture() const { return InstanceIdTexture; }  // null unless enabled
   vtkOpenGLFramebufferObject* GetFramebuffer() const { return Framebuffer; }
   int GetWidth() const { return Width; }    // of the targets: the viewport plus the guard band
@@ -103,20 +108,23 @@ class GBufferPass : public vtkOpenGLRenderPass {
   ~GBufferPass() override;
 
  private:
-  // colour, (position,) normal, flags, (ids)
+  // colour, (position,) normal, flags, (baked AO), (ids)
   int FlagsAttachment() const { return Lean ? 2 : 3; }
-  int Attachments() const { return FlagsAttachment() + 1 + (InstanceIds ? 1 : 0); }
+  int BakedAOAttachment() const { return FlagsAttachment() + 1; }
+  int Attachments() const { return FlagsAttachment() + 1 + (BakedAO ? 1 : 0) + (InstanceIds ? 1 : 0); }
   void DropTargets();
   void ActivateDrawBuffers(int count);
   void Allocate(vtkOpenGLRenderWindow* renWin, int w, int h);
 
   vtkSmartPointer<vtkRenderPass> Delegate;
-  vtkSmartPointer<vtkTextureObject> ColorTexture, PositionTexture, NormalTexture, DepthTexture, FlagsTexture, InstanceIdTexture;
+  vtkSmartPointer<vtkTextureObject> ColorTexture, PositionTexture, NormalTexture, DepthTexture, FlagsTexture, BakedAOTexture,
+      InstanceIdTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkOpenGLQuadHelper* CopyQuad = nullptr;
   bool CopyToOutput = true;
   bool Lean = false;
   bool InstanceIds = false;
+  bool BakedAO = false;
   bool Parallel = false;  // the camera's projection this frame (which way is "toward the eye")
   vtkTimeStamp LayoutTime;
   int Width = 0, Height = 0;

@@ -31,7 +31,7 @@ std::shared_ptr<AOTechnique> make(const MethodSettings& s) {
   o.thickness = s.number("thickness", o.thickness);
   o.filterTolerance = s.number("tolerance", o.filterTolerance);
   o.guard = s.number("guard", o.guard);
-  o.debugView = static_cast<ObscuranceDebugView>(s.choice("view", static_cast<int>(o.debugView)));
+  o.debugView = static_cast<DeferredDebugView>(s.choice("view", static_cast<int>(o.debugView)));
   return std::make_shared<ObscuranceTechnique>(o);
 }
 

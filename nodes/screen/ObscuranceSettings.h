@@ -9,16 +9,11 @@
 #include <glm/glm.hpp>
 
 #include "core/AOScene.h"
+#include "render/DeferredConfig.h"
 #include "screen/InterleavePattern.h"
 
 namespace aokit {
 
-enum class ObscuranceDebugView {
-  None,     // the lit frame times (1 - AO)
-  AO,       // 1 - AO as grey (what the AO-only read-back sees)
-  Normals,  // view-space normals mapped to [0, 1]
-  Depth,    // exp(-view distance / 8 R): near is white
-};
 
 struct ObscuranceSettings {
   int samples = 4;                  //!< rays per pixel, 1..64 (x16 after interleaving and filtering)
@@ -39,7 +34,7 @@ struct ObscuranceSettings {
   double guard = 0.0;               //!< guard band: the G-buffer covers this fraction of the screen
                                     //!< size more on each side, 0..0.5, so that rays near the screen
                                     //!< edges find occluders just off screen (G-buffer cost x (1+2g)^2)
-  ObscuranceDebugView debugView = ObscuranceDebugView::None;
+  DeferredDebugView debugView = DeferredDebugView::None;  //!< render/DeferredConfig.h
 };
 
 // Throws std::invalid_argument with a one-line message ("obscurance: samples must be in 1..64,

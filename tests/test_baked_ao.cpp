@@ -1,0 +1,115 @@
+// Per-vertex baked AO through the G-buffer: values set on an actor reach the frame interpolated
+// across its triangles, other actors read 0, and clearing them restores 0.
+#include <gtest/gtest.h>
+
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkRenderer.h>
+#include <vtkTextureObject.h>
+#include <vtk_glew.h>
+
+#include "core/Geometry.h"
+#include "core/NodeVisitor.h"
+#include "headless/FrameCapture.h"
+#include "headless/SceneView.h"
+#include "render/ActorKeys.h"
+#include "render/BakedAO.h"
+#include "render/DeferredAOPass.h"
+#include "scenes/BuiltinScenes.h"
+
+using namespace aokit;
+
+namespace {
+
+// A deferred pass whose own AO is 0 everywhere: what reaches the frame is the baked AO alone.
+class BakedOnlyPass : public DeferredAOPass {
+ public:
+  static BakedOnlyPass* New();
+  vtkTypeMacro(BakedOnlyPass, DeferredAOPass);
+
+ protected:
+  DeferredConfig Configure(vtkRenderer*) override {
+    DeferredConfig c;
+    c.bakedAO = true;
+    return c;
+  }
+  const char* ReadyFamily(const DeferredFrame&) override { return nullptr; }
+  vtkTextureObject* RenderAO(DeferredFrame& f) override {
+    f.fbo->Bind();
+    f.fbo->AddColorAttachment(0, f.aoTarget);
+    f.fbo->ActivateDrawBuffers(1);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    f.fbo->RemoveColorAttachment(0);
+    f.fbo->UnBind();
+    return f.aoTarget;
+  }
+};
+vtkStandardNewMacro(BakedOnlyPass);
+
+vtkActor* actorOfInstance(vtkRenderer* renderer, std::uint32_t id) {
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+    if (propInstanceId(a) == id) return a;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(BakedAO, ReachesTheFrameInterpolatedAndClearsAgain) {
+  Scene scene = makeBuiltinScene("sphere-plane");
+  SceneView view(scene, 200, 150);
+  const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
+  const auto instances = collectInstances(*scene.root);
+  ASSERT_EQ(instances[0].geometry->name(), "floor");
+  vtkActor* floor = actorOfInstance(view.window.renderer(), instances[0].id);
+  ASSERT_NE(floor, nullptr);
+
+  // A ramp in x over the floor: linear across every triangle, so interpolation reproduces it.
+  const TriangleMesh& mesh = *instances[0].geometry->mesh();
+  std::vector<float> ramp;
+  for (const auto& p : mesh.positions) ramp.push_back((p.x + 4.0f) / 8.0f);
+  setBakedAO(floor, ramp);
+  EXPECT_TRUE(hasBakedAO(floor));
+  EXPECT_THROW(setBakedAO(floor, {0.5f}), std::invalid_argument);
+
+  vtkNew<BakedOnlyPass> pass;
+  view.window.renderer()->SetPass(pass);
+  view.window.render();
+  std::vector<float> ao;
+  ASSERT_TRUE(pass->ReadAO(vtkOpenGLRenderWindow::SafeDownCast(view.window.window()), ao));
+  std::size_t floorPixels = 0, spherePixels = 0;
+  double worstFloor = 0.0, worstSphere = 0.0;
+  for (std::size_t i = 0; i < ao.size(); ++i) {
+    if (!surfaces.covered[i]) continue;
+    if (surfaces.position[i].z < 1e-3f) {
+      ++floorPixels;
+      worstFloor = std::max(worstFloor, std::abs(ao[i] - (surfaces.position[i].x + 4.0) / 8.0));
+    } else {
+      ++spherePixels;
+      worstSphere = std::max(worstSphere, static_cast<double>(std::abs(ao[i])));
+    }
+  }
+  EXPECT_GT(floorPixels, 5000u);
+  EXPECT_GT(spherePixels, 1000u);
+  EXPECT_LT(worstFloor, 2e-3) << "R16F holds the ramp to about 1e-3";
+  EXPECT_EQ(worstSphere, 0.0) << "an actor without baked AO reads 0";
+
+  clearBakedAO(floor);
+  EXPECT_FALSE(hasBakedAO(floor));
+  view.window.render();
+  ASSERT_TRUE(pass->ReadAO(vtkOpenGLRenderWindow::SafeDownCast(view.window.window()), ao));
+  double worst = 0.0;
+  for (std::size_t i = 0; i < ao.size(); ++i)
+    if (surfaces.covered[i]) worst = std::max(worst, static_cast<double>(std::abs(ao[i])));
+  EXPECT_EQ(worst, 0.0);
+  view.window.renderer()->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(view.window.window());
+}
