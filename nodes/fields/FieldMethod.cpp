@@ -22,7 +22,8 @@ std::shared_ptr<AOTechnique> make(const MethodSettings& s) {
   FieldTechniqueSettings t;
   FieldSettings& f = t.field;
   FieldPassSettings& p = t.pass;
-  f.selfOcclusion = false;  // per-vertex self-occlusion is not shown yet: do not pay for its bake
+  f.selfOcclusion = s.flag("self", true);
+  f.selfOcclusionRays = s.integer("selfRays", f.selfOcclusionRays);
   const int kind = s.choice("kind", 0);
   t.autoKind = kind == 0;
   if (kind > 0) f.kind = static_cast<FieldKind>(kind - 1);
@@ -90,6 +91,9 @@ const MethodRegistrar registrar{{
         {"sliceAxis", SettingKind::Choice, "slice view: the plane's normal axis", 0, 0, {"x", "y", "z"}, "z"},
         {"slice", SettingKind::Number, "slice view: the plane's coordinate, world units", -1e30, 1e30, {},
          number(kDefaults.pass.slicePosition)},
+        {"self", SettingKind::Flag, "per-vertex self-occlusion of each occluder, baked with its field", 0, 0, {}, "1"},
+        {"selfRays", SettingKind::Integer, "self-occlusion bake: rays per vertex", 1, 65536, {},
+         std::to_string(kDefaults.field.selfOcclusionRays)},
         {"cache", SettingKind::Flag, "reuse and keep bakes in the cache folder", 0, 0, {}, "1"},
     },
     {"kind=auto", "kind=auto,combine=cone", "kind=auto,scale=1", "kind=auto,resolution=64", "kind=cube",

@@ -126,8 +126,15 @@ void FieldPass::SetSceneRadius(double r) {
   Modified();
 }
 
+void FieldPass::SetBakedAO(bool on) {
+  if (on == BakedAO) return;
+  BakedAO = on;
+  Modified();
+}
+
 DeferredConfig FieldPass::Configure(vtkRenderer*) {
   DeferredConfig c;
+  c.bakedAO = BakedAO;
   c.downsample = downsampleOf(Settings.resolutionScale);
   c.aoChannels = 1;
   c.instanceIds = true;

@@ -51,6 +51,9 @@ class FieldPass : public DeferredAOPass {
   void SetOccluders(std::vector<FieldOccluder> occluders);
   // The AO radius R (world units): upsampling kernels and the depth debug view only.
   void SetSceneRadius(double r);
+  // Combine the per-vertex AO baked into the props (render/BakedAO.h: the occluders'
+  // self-occlusion) with the fields': 1 - (1 - baked)(1 - A). Off by default.
+  void SetBakedAO(bool on);
 
   const std::vector<std::shared_ptr<const BakedField>>& GetFields() const { return Fields; }
   const std::vector<FieldOccluder>& GetOccluders() const { return Occluders; }
@@ -83,6 +86,7 @@ class FieldPass : public DeferredAOPass {
 
   FieldPassSettings Settings;
   double SceneRadius = 1.0;
+  bool BakedAO = false;
   std::vector<std::shared_ptr<const BakedField>> Fields;
   std::vector<FieldOccluder> Occluders;
   FieldGpuData FieldData;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <vtkActor.h>
+#include <vtkActorCollection.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 
@@ -13,6 +15,8 @@
 #include "fields/FieldBaker.h"
 #include "fields/FieldCache.h"
 #include "fields/FieldFile.h"
+#include "render/ActorKeys.h"
+#include "render/BakedAO.h"
 
 namespace aokit {
 
@@ -144,10 +148,34 @@ void FieldTechnique::attach(vtkRenderer* renderer, AOScene& scene) {
   pass_->SetOccluders(occluders_);
   pass_->SetSceneRadius(radius_);
   update(renderer, scene);
+  applySelfOcclusion(renderer);
   renderer->SetPass(pass_);
 }
 
-void FieldTechnique::update(vtkRenderer*, AOScene& scene) {
+void FieldTechnique::applySelfOcclusion(vtkRenderer* renderer) {
+  // Instance id -> its field's per-vertex self-occlusion.
+  std::map<std::uint32_t, const std::vector<float>*> byId;
+  for (const FieldOccluder& o : occluders_)
+    if (!fields_[o.field]->vertexOcclusion.empty()) byId[o.instanceId] = &fields_[o.field]->vertexOcclusion;
+  if (pass_) pass_->SetBakedAO(!byId.empty());
+  if (byId.empty()) return;
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor()) {
+    const auto it = byId.find(propInstanceId(a));
+    if (it == byId.end() || hasBakedAO(a)) continue;
+    setBakedAO(a, *it->second);
+    selfShaded_.push_back(a);
+  }
+}
+
+void FieldTechnique::clearSelfOcclusion() {
+  for (auto& a : selfShaded_)
+    if (a && hasBakedAO(a)) clearBakedAO(a);
+  selfShaded_.clear();
+}
+
+void FieldTechnique::update(vtkRenderer* renderer, AOScene& scene) {
   if (!pass_) return;
   const double radius = settings_.field.radius > 0.0 ? settings_.field.radius : scene.aoRadius();
   const Falloff falloff = settings_.field.falloff ? *settings_.field.falloff : scene.falloff();
@@ -157,17 +185,23 @@ void FieldTechnique::update(vtkRenderer*, AOScene& scene) {
     falloff_ = falloff;
     plan(scene, collectInstances(scene, kCastsAO), {});
     pass_->SetSceneRadius(radius_);
+    clearSelfOcclusion();  // baked for the old R or falloff
+    applySelfOcclusion(renderer);
   } else if (revision != revision_) {
     const auto instances = collectInstances(scene, kCastsAO);
-    if (place(instances))
+    if (place(instances)) {
       pass_->SetOccluders(occluders_);
-    else
+    } else {
       plan(scene, instances, {});
+      clearSelfOcclusion();  // fields may have changed under old actors
+    }
+    applySelfOcclusion(renderer);  // new actors, or meshes replaced under old ones
   }
   revision_ = revision;
 }
 
 void FieldTechnique::detach(vtkRenderer* renderer) {
+  clearSelfOcclusion();
   if (pass_ && renderer->GetRenderWindow()) pass_->ReleaseGraphicsResources(renderer->GetRenderWindow());
   renderer->SetPass(previous_);
   pass_ = nullptr;

@@ -9,6 +9,9 @@
 // update(): when the scene's revision changed, the occluders' world matrices are handed to the
 //   pass (a few floats each: no re-bake for moved or rotated occluders); a new instance, a
 //   rescaled one, a replaced mesh, or a new R or falloff plans and bakes again what is missing.
+// Self-occlusion (field.selfOcclusion): each occluder's per-vertex AO by itself, baked with its
+//   field, goes to its actors (render/BakedAO.h) and the pass combines it with the fields':
+//   1 - (1 - self)(1 - A) (an occluder skips its own field, so the two never count twice).
 #include <map>
 #include <memory>
 #include <string>
@@ -16,6 +19,7 @@
 #include <vector>
 
 #include <vtkSmartPointer.h>
+#include <vtkWeakPointer.h>
 
 #include "core/AOTechnique.h"
 #include "fields/FieldInstances.h"
@@ -23,6 +27,7 @@
 #include "fields/FieldPassSettings.h"
 #include "fields/FieldSettings.h"
 
+class vtkActor;
 class vtkRenderPass;
 
 namespace aokit {
@@ -78,6 +83,8 @@ class FieldTechnique : public AOTechnique {
             const std::function<void(double)>& progress);
   std::shared_ptr<const BakedField> obtain(const PlannedField& f, const std::function<void(double)>& progress);
   bool place(const std::vector<GeometryInstance>& instances);
+  void applySelfOcclusion(vtkRenderer* renderer);
+  void clearSelfOcclusion();
 
   FieldTechniqueSettings settings_;
   double radius_ = 0.0;              // world R the fields were planned for
@@ -97,6 +104,7 @@ class FieldTechnique : public AOTechnique {
   std::uint64_t revision_ = 0;
   vtkSmartPointer<FieldPass> pass_;
   vtkSmartPointer<vtkRenderPass> previous_;
+  std::vector<vtkWeakPointer<vtkActor>> selfShaded_;  // actors given baked AO, cleared on detach
   bool timing_ = false;
 };
 
