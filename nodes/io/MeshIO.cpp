@@ -4,10 +4,13 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "io/IsolatedRead.h"
 #include "io/MeshReaders.h"
+#include "io/StlFormat.h"
 
 namespace aokit {
 namespace {
@@ -43,29 +46,38 @@ void finishNormals(TriangleMesh& m) {
   for (auto& n : m.normals) n = glm::normalize(n);
 }
 
-bool viaOpenMesh(const std::string& ext) { return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl"; }
-bool vtkFallback(const std::string& ext) { return ext == ".obj" || ext == ".stl"; }
+bool viaOpenMesh(const std::string& ext) { return ext == ".off" || ext == ".obj" || ext == ".ply"; }
 std::string readerNames(const std::string& ext) {
-  return !viaOpenMesh(ext) ? "VTK" : vtkFallback(ext) ? "OpenMesh or VTK" : "OpenMesh";
+  return ext == ".obj" ? "OpenMesh or VTK" : viaOpenMesh(ext) ? "OpenMesh" : "VTK";
 }
 
-// The library readers: OpenMesh first where it applies, VTK for its own formats and as a second
-// opinion on OBJ and STL. Runs in the reader process (see IsolatedRead.h).
+std::string wholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open the file");
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The readers: aokit's own for STL (io/StlFormat.h), OpenMesh for OFF, OBJ and PLY, VTK for its
+// own formats and as a second opinion on OBJ. Runs in the reader process (see IsolatedRead.h).
 ReadResult readWithLibraries(const std::string& path, const std::string& ext) {
   ReadResult r;
+  if (ext == ".stl") {
+    r.mesh = parseStl(wholeFile(path));
+    r.ok = true;
+    return r;
+  }
   if (viaOpenMesh(ext)) {
-    // OBJ and STL normals are per face corner; OpenMesh would collapse them onto shared vertices,
-    // so only formats with true per-vertex normals ask for them.
+    // OBJ normals are per face corner; OpenMesh would collapse them onto shared vertices, so only
+    // formats with true per-vertex normals ask for them.
     r.ok = readWithOpenMesh(path, ext == ".off" || ext == ".ply", r.mesh, r.why);
   }
   // VTK also gets a go when OpenMesh found no faces: its readers know other dialects. Not for OFF
   // (VTK has no reader) nor PLY (vtkPLYReader double-frees on corrupt files that pass our checks).
-  if ((!r.ok || r.mesh.triangles.empty()) && (vtkFallback(ext) || !viaOpenMesh(ext))) {
+  if ((!r.ok || r.mesh.triangles.empty()) && (ext == ".obj" || !viaOpenMesh(ext))) {
     const VtkFormat format = ext == ".vtp"   ? VtkFormat::XmlPolyData
                              : ext == ".vtu" ? VtkFormat::XmlUnstructuredGrid
                              : ext == ".vtk" ? VtkFormat::Legacy
-                             : ext == ".obj" ? VtkFormat::Obj
-                                             : VtkFormat::Stl;
+                                             : VtkFormat::Obj;
     TriangleMesh other;
     std::string vtkWhy;
     if (readWithVtk(path, format, other, vtkWhy) && (!r.ok || !other.triangles.empty())) {

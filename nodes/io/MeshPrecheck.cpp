@@ -11,6 +11,8 @@ void precheckMeshFile(const std::string& path, const std::string& ext) {
   if (ext == ".ply") precheckPly(path, size);
   if (ext == ".obj") precheckObj(path);
   if (ext == ".stl") precheckStl(path, size);
+  if (ext == ".vtk") precheckVtkLegacy(path, size);
+  if (ext == ".vtp" || ext == ".vtu") precheckVtkXml(path, ext, size);
 }
 
 }  // namespace aokit

@@ -11,7 +11,7 @@ namespace aokit {
 
 bool readWithOpenMesh(const std::string& path, bool wantNormals, TriangleMesh& out, std::string& why);
 
-enum class VtkFormat { XmlPolyData, XmlUnstructuredGrid, Legacy, Obj, Stl };
+enum class VtkFormat { XmlPolyData, XmlUnstructuredGrid, Legacy, Obj };
 bool readWithVtk(const std::string& path, VtkFormat format, TriangleMesh& out, std::string& why);
 
 // Cheap structural checks for formats whose readers trust declared counts (they reserve or loop

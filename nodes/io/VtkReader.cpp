@@ -1,4 +1,4 @@
-// Reading through VTK: the XML and legacy dataset formats, and the fallback for OBJ and STL.
+// Reading through VTK: the XML and legacy dataset formats, and the fallback for OBJ.
 // Any dataset is reduced to its outer surface (vtkGeometryFilter) and triangulated
 // (vtkTriangleFilter); points and lines are dropped.
 #include <mutex>
@@ -16,7 +16,6 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
 #include <vtkXMLPolyDataReader.h>
@@ -106,11 +105,6 @@ vtkSmartPointer<vtkAlgorithm> makeReader(VtkFormat format, const std::string& pa
     }
     case VtkFormat::Obj: {
       auto r = vtkSmartPointer<vtkOBJReader>::New();
-      r->SetFileName(path.c_str());
-      return r;
-    }
-    case VtkFormat::Stl: {
-      auto r = vtkSmartPointer<vtkSTLReader>::New();
       r->SetFileName(path.c_str());
       return r;
     }
