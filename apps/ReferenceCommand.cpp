@@ -5,6 +5,7 @@
 #include "Options.h"
 #include "core/Progress.h"
 #include "output/ImageFiles.h"
+#include "output/OutputPaths.h"
 #include "reference/AOReference.h"
 #include "reference/EmbreeScene.h"
 #include "reference/Falloff.h"
@@ -27,6 +28,7 @@ void runReference(const ReferenceArgs& a) {
   int w, h;
   a.scene.imageSize(w, h);
   Scene scene = a.scene.load();
+  checkOutputPaths({a.output + ".png", a.output + ".f32", a.output + "-stderr.f32"});
   if (!a.falloff.empty()) scene.root->setFalloff(parseFalloff(a.falloff));
   SceneView view(scene, w, h);
   const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
@@ -54,7 +56,7 @@ void addReferenceCommand(CLI::App& app) {
   args->scene.add(*cmd);
   cmd->add_option("--samples", args->samples, "rays per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 16));
   cmd->add_option("--falloff", args->falloff, "binary, wendland, sqrt, exponential (default: the scene's)");
-  cmd->add_option("--seed", args->seed, "sampling seed")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "sampling seed")->capture_default_str()->check(inRange(limits::kSeed64));
   cmd->add_option("--output,-o", args->output, "output prefix: PREFIX.png, PREFIX.f32, PREFIX-stderr.f32")
       ->capture_default_str();
   cmd->callback([args] { runReference(*args); });

@@ -5,6 +5,7 @@
 #include "Options.h"
 #include "methods/MethodRegistry.h"
 #include "output/ImageFiles.h"
+#include "output/OutputPaths.h"
 #include "render/FrameCapture.h"
 #include "render/SceneView.h"
 
@@ -25,6 +26,7 @@ void runRender(const RenderArgs& a) {
   int w, h;
   a.scene.imageSize(w, h);
   Scene scene = a.scene.load();
+  checkOutputPaths({a.output, a.aoFloat});
   if (a.frame < 0 || a.frame >= scene.frameCount)
     throw std::invalid_argument("--frame " + std::to_string(a.frame) + " is out of range (scene has " +
                                 std::to_string(scene.frameCount) + " frames)");

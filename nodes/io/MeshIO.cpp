@@ -8,6 +8,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "io/InputFiles.h"
 #include "io/IsolatedRead.h"
 #include "io/MeshReaders.h"
 #include "io/StlFormat.h"
@@ -96,6 +97,7 @@ TriangleMesh read(const std::string& path, const std::string& ext) {
   if (!fs::is_regular_file(status)) throw std::runtime_error("not a regular file");
   const auto size = fs::file_size(path, ec);
   if (ec || size == 0) throw std::runtime_error("file is empty");
+  noteInputFile(path);
   precheckMeshFile(path, ext);
 
   ReadResult r = readIsolated([&] { return readWithLibraries(path, ext); }, size);

@@ -22,6 +22,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include "io/MeshReaders.h"
+#include "output/VtkErrorWindow.h"
 
 namespace aokit {
 namespace {
@@ -74,17 +75,6 @@ class ScopedVtkCapture {
 };
 
 std::mutex vtkReadMutex;
-
-// VTK messages read "ERROR: In <file>, line N\n<class> (0x...): <text>\n\n": keep <text>, at most
-// 200 bytes, printable ASCII only (readers quote the garbage they choked on).
-std::string vtkMessageText(std::string msg) {
-  if (const auto colon = msg.find("): "); colon != std::string::npos) msg = msg.substr(colon + 3);
-  while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
-  if (msg.size() > 200) msg = msg.substr(0, 200) + "...";
-  for (char& c : msg)
-    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
-  return msg;
-}
 
 vtkSmartPointer<vtkAlgorithm> makeReader(VtkFormat format, const std::string& path) {
   switch (format) {
