@@ -39,14 +39,14 @@ void checkNumbers(const TextLines& line, std::size_t least, std::size_t most, bo
 
 // One index slot of a face corner: a non-zero integer; positive counts from 1, negative back from
 // the last element defined so far.
-void checkIndex(std::string_view slot, long long defined, const char* kind, const TextLines& line,
+void checkIndex(std::string_view slot, long long defined, const char* kind, const char* kinds, const TextLines& line,
                 std::string_view corner) {
   long long i = 0;
   if (!parseInteger(slot, -(1LL << 40), 1LL << 40, i) || i == 0) notAReference(line, corner);
   if ((i > 0 && i > defined) || (i < 0 && -i > defined))
     throw std::runtime_error(line.at() + "face refers to " + kind + " " + std::to_string(i) + ", but only " +
-                             std::to_string(defined) + " " + kind + (defined == 1 ? "" : "s") +
-                             " are defined before it");
+                             std::to_string(defined) + " " + (defined == 1 ? kind : kinds) +
+                             (defined == 1 ? " is" : " are") + " defined before it");
 }
 
 void checkFace(const TextLines& line, const ObjCounts& n) {
@@ -63,9 +63,9 @@ void checkFace(const TextLines& line, const ObjCounts& n) {
     const bool emptySlot = (a != std::string_view::npos && vt.empty() && b == std::string_view::npos) ||
                            (b != std::string_view::npos && vn.empty());
     if (tooMany || emptySlot) notAReference(line, corner);
-    checkIndex(v, n.v, "vertex", line, corner);
-    if (!vt.empty()) checkIndex(vt, n.vt, "texture coordinate", line, corner);
-    if (!vn.empty()) checkIndex(vn, n.vn, "normal", line, corner);
+    checkIndex(v, n.v, "vertex", "vertices", line, corner);
+    if (!vt.empty()) checkIndex(vt, n.vt, "texture coordinate", "texture coordinates", line, corner);
+    if (!vn.empty()) checkIndex(vn, n.vn, "normal", "normals", line, corner);
   }
 }
 

@@ -56,10 +56,10 @@ void precheckOff(const std::string& path, std::uintmax_t fileSize) {
 
   // OpenMesh reads the counts and coordinates token by token but the rest of a vertex line as
   // one string: every line must hold what it should, or later values shift into wrong places.
-  TextLines lines(in);
-  if (!lines.next() || lines.size() != 3)
-    throw std::runtime_error("line " + std::to_string(lines.lineNumber() + 1) +
-                             ": OFF needs exactly three counts (vertices faces edges) after the keyword line");
+  TextLines lines(in, '\0', 2);
+  if (!lines.next()) throw std::runtime_error("file ends before the counts (vertices faces edges)");
+  if (lines.size() != 3)
+    throw std::runtime_error(lines.at() + "OFF needs exactly three counts (vertices faces edges) after the keyword line");
   const std::string at = lines.at();
   const std::uint64_t nV = parseCount(lines[0], at + "vertex count"), nF = parseCount(lines[1], at + "face count");
   parseCount(lines[2], at + "edge count");

@@ -15,7 +15,9 @@ namespace aokit {
 class TextLines {
  public:
   // `comment`: a character that ends the useful part of a line ('#' in OBJ), or 0 for none.
-  explicit TextLines(std::istream& in, char comment = '\0') : in_(in), comment_(comment) {}
+  // `firstLine`: the number of the stream's first line, when the caller has read lines before.
+  explicit TextLines(std::istream& in, char comment = '\0', long long firstLine = 1)
+      : in_(in), comment_(comment), line_(firstLine - 1) {}
 
   // Moves to the next line with at least one token; false at the end of the file.
   bool next();
@@ -30,7 +32,7 @@ class TextLines {
   char comment_;
   std::string text_;
   std::vector<std::string_view> tokens_;
-  long long line_ = 0;
+  long long line_;
 };
 
 // Whitespace-separated tokens of a whole file in memory, with line numbers, for formats whose

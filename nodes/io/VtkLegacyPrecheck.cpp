@@ -75,7 +75,10 @@ class LegacyVtk {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& what) const { throw std::runtime_error(in_.at() + what); }
+  // Binary values are reported at their keyword's line; ASCII ones at their own.
+  [[noreturn]] void fail(const std::string& what) const {
+    throw std::runtime_error((binaryLine_ ? "line " + std::to_string(binaryLine_) + ": " : in_.at()) + what);
+  }
 
   std::string keyword() { return lower(in_.next()); }
 
@@ -127,6 +130,7 @@ class LegacyVtk {
       }
       return;
     }
+    const long long keywordLine = in_.lineNumber();
     in_.skipLine();  // the reader skips to the end of the keyword line, then reads raw bytes
     const std::size_t start = in_.position(), left = data_.size() - start;
     if (t.bytes == 0 ? (n + 7) / 8 > left : n > left / t.bytes)
@@ -134,8 +138,10 @@ class LegacyVtk {
            " bytes left in the file hold");
     const std::uint64_t bytes = t.bytes == 0 ? (n + 7) / 8 : n * std::uint64_t(t.bytes);
     if (visit) {
+      binaryLine_ = keywordLine;
       const auto* p = reinterpret_cast<const unsigned char*>(data_.data()) + start;
       for (std::uint64_t i = 0; i < n; ++i) visit(i, bigEndian(p + i * t.bytes, t));
+      binaryLine_ = 0;
     }
     in_.seek(start + bytes);
   }
@@ -196,7 +202,9 @@ class LegacyVtk {
     std::vector<long long> ids;
   };
 
-  CellList cellList(const std::string& what) {
+  // `onCell(c, ids, n)` checks each cell as soon as it is complete, while the line is current.
+  using OnCell = std::function<void(std::uint64_t, const long long*, std::uint64_t)>;
+  CellList cellList(const std::string& what, const OnCell& onCell = nullptr) {
     CellList list;
     if (newCells_) {
       const long long nOffsets = count(what + " offsets count"), nConn = count(what + " connectivity size");
@@ -214,6 +222,9 @@ class LegacyVtk {
       if (keyword() != "connectivity") fail(what + ": expected CONNECTIVITY");
       values(valueType(std::string(in_.next()), in_.at()), nConn, what + " CONNECTIVITY",
              [&](std::uint64_t, double v) { list.ids.push_back(static_cast<long long>(v)); });
+      if (onCell)
+        for (std::size_t c = 0; c + 1 < list.offsets.size(); ++c)
+          onCell(c, list.ids.data() + list.offsets[c], list.offsets[c + 1] - list.offsets[c]);
       optionalMetadata();
       return list;
     }
@@ -226,13 +237,14 @@ class LegacyVtk {
         if (v < 0) fail(what + " cell " + std::to_string(list.offsets.size() - 1) + " has a negative point count");
         left = static_cast<std::uint64_t>(v);
         expectCount = left == 0;
-        if (expectCount) list.offsets.push_back(list.ids.size());
-        return;
+      } else {
+        list.ids.push_back(static_cast<long long>(v));
+        expectCount = --left == 0;
       }
-      list.ids.push_back(static_cast<long long>(v));
-      if (--left == 0) {
-        expectCount = true;
+      if (expectCount) {
+        const std::uint64_t begin = list.offsets.back();
         list.offsets.push_back(list.ids.size());
+        if (onCell) onCell(list.offsets.size() - 2, list.ids.data() + begin, list.ids.size() - begin);
       }
     });
     if (!expectCount || list.offsets.size() != std::uint64_t(n) + 1)
@@ -242,13 +254,11 @@ class LegacyVtk {
 
   void polyCells(const std::string& key) {
     const std::string what = [&] { std::string u = key; for (char& c : u) c = char(std::toupper(c)); return u; }();
-    const CellList list = cellList(what);
     const std::uint64_t least = key == "vertices" ? 1 : key == "lines" ? 2 : 3;
-    for (std::size_t c = 0; c + 1 < list.offsets.size(); ++c) {
-      if (list.offsets[c + 1] - list.offsets[c] < least)
-        fail(what + " cell " + std::to_string(c) + " has fewer than " + std::to_string(least) + " points");
-      for (std::uint64_t k = list.offsets[c]; k < list.offsets[c + 1]; ++k) checkPoint(double(list.ids[k]), c, what);
-    }
+    const CellList list = cellList(what, [&](std::uint64_t c, const long long* ids, std::uint64_t n) {
+      if (n < least) fail(what + " cell " + std::to_string(c) + " has fewer than " + std::to_string(least) + " points");
+      for (std::uint64_t k = 0; k < n; ++k) checkPoint(double(ids[k]), c, what);
+    });
     cells_ += list.offsets.size() - 1;
   }
 
@@ -355,6 +365,7 @@ class LegacyVtk {
   std::string_view data_;
   TokenStream in_;
   bool binary_ = false, newCells_ = false, grid_ = false, typed_ = false;
+  long long binaryLine_ = 0;
   long long points_ = -1;
   std::uint64_t cells_ = 0;
   CellList gridCells_;

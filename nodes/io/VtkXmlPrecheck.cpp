@@ -28,6 +28,7 @@ struct CellSection {
   long long count = 0;  // cells declared by the Piece
   std::optional<std::vector<long long>> connectivity, offsets, types;
   bool undecoded = false;  // compressed with a codec not decoded here: sizes checked only
+  std::string at;          // "line N: " of its connectivity array, where problems are reported
 };
 
 struct Piece {
@@ -168,7 +169,10 @@ class VtkXml {
       s.emplace();
       store = &*s;
     };
-    if (name == "connectivity") slot(section->connectivity);
+    if (name == "connectivity") {
+      slot(section->connectivity);
+      section->at = scan_.at(tag.begin);
+    }
     if (name == "offsets") slot(section->offsets);
     if (name == "types" && parent == "Cells") slot(section->types);
     if (name == "offsets" || name == "types") return std::uint64_t(section->count);
@@ -233,13 +237,14 @@ class VtkXml {
       if (!s.connectivity || !s.offsets || (kind == "Cells" && !s.types))
         fail(tag, "<" + kind + "> of " + std::to_string(s.count) + " cells lacks its connectivity, offsets" +
                       (kind == "Cells" ? " or types" : "") + " array");
+      auto fail = [&](const std::string& what) { throw std::runtime_error(s.at + what); };
       const auto& conn = *s.connectivity;
       const std::uint64_t least = kind == "Verts" ? 1 : kind == "Lines" ? 2 : 3;
       std::uint64_t start = 0;
       for (std::size_t c = 0; c < s.offsets->size(); ++c) {
         const long long end = (*s.offsets)[c];
         if (end < static_cast<long long>(start) || std::uint64_t(end) > conn.size())
-          fail(tag, "<" + kind + "> offset " + std::to_string(c) + " (" + std::to_string(end) +
+          fail("<" + kind + "> offset " + std::to_string(c) + " (" + std::to_string(end) +
                         ") goes backwards or beyond the " + std::to_string(conn.size()) + " connectivity values");
         const std::uint64_t n = std::uint64_t(end) - start;
         std::string problem;
@@ -250,11 +255,11 @@ class VtkXml {
         for (std::uint64_t k = start; problem.empty() && k < std::uint64_t(end); ++k)
           if (conn[k] < 0 || conn[k] >= p.points)
             problem = "refers to point " + std::to_string(conn[k]) + ", but the piece has " + std::to_string(p.points);
-        if (!problem.empty()) fail(tag, "<" + kind + "> cell " + std::to_string(c) + ": " + problem);
+        if (!problem.empty()) fail("<" + kind + "> cell " + std::to_string(c) + ": " + problem);
         start = std::uint64_t(end);
       }
       if (start != conn.size())
-        fail(tag, "<" + kind + "> offsets end at " + std::to_string(start) + ", but connectivity holds " +
+        fail("<" + kind + "> offsets end at " + std::to_string(start) + ", but connectivity holds " +
                       std::to_string(conn.size()) + " values");
     }
     piece_.reset();
