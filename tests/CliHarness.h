@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -38,7 +39,7 @@ inline std::string readAll(const fs::path& p) {
 
 // Runs AOKIT_CLI with `args` (no shell), without DISPLAY, killing it after `limitSeconds`.
 inline CliResult runAokit(const std::vector<std::string>& args, double limitSeconds = 60.0) {
-  static int counter = 0;
+  static std::atomic<int> counter{0};
   const fs::path base = fs::temp_directory_path() / ("aokit-cli-" + std::to_string(getpid()) + "-" +
                                                      std::to_string(counter++));
   const std::string outPath = base.string() + ".out", errPath = base.string() + ".err";

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -11,12 +12,15 @@
 #include "io/InputFiles.h"
 #include "io/IsolatedRead.h"
 #include "io/MeshReaders.h"
+#include "io/SceneLimits.h"
 #include "io/StlFormat.h"
 
 namespace aokit {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(1) << 30;
 
 constexpr const char* kExtensions[] = {".off", ".obj", ".ply", ".stl", ".vtp", ".vtu", ".vtk"};
 
@@ -30,6 +34,21 @@ std::string oneLine(std::string s) {
   std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
   while (!s.empty() && s.back() == ' ') s.pop_back();
   return s.empty() ? std::string("unknown error") : s;
+}
+
+// Finite but astronomically large coordinates (3e38) overflow the camera and ray arithmetic
+// downstream: positions must lie within the range the CLI and scene files accept.
+void checkCoordinateRange(const TriangleMesh& m) {
+  const NumberRange& r = limits::kCoordinate;
+  for (std::size_t i = 0; i < m.positions.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (!r.contains(m.positions[i][k]))
+      {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", double(m.positions[i][k]));
+        throw std::runtime_error("vertex " + std::to_string(i) + " has coordinate " + value + ", outside " +
+                                 r.describe().substr(std::string("a number in ").size()));
+      }
 }
 
 // Keeps file normals only when they are all usable, then makes them unit length.
@@ -97,6 +116,10 @@ TriangleMesh read(const std::string& path, const std::string& ext) {
   if (!fs::is_regular_file(status)) throw std::runtime_error("not a regular file");
   const auto size = fs::file_size(path, ec);
   if (ec || size == 0) throw std::runtime_error("file is empty");
+  // The checks and the readers hold a whole file in memory, more than once: a bound for all of them.
+  if (size > kMaxFileBytes)
+    throw std::runtime_error("file is " + std::to_string(size >> 20) + " MiB, more than the " +
+                             std::to_string(kMaxFileBytes >> 20) + " MiB aokit reads");
   noteInputFile(path);
   precheckMeshFile(path, ext);
 
@@ -104,6 +127,7 @@ TriangleMesh read(const std::string& path, const std::string& ext) {
   if (!r.ok)
     throw std::runtime_error("not a mesh " + readerNames(ext) + " can read" + (r.why.empty() ? "" : " (" + r.why + ")"));
   r.mesh.validate();  // before the normals: computing them needs finite positions
+  checkCoordinateRange(r.mesh);
   finishNormals(r.mesh);
   return std::move(r.mesh);
 }

@@ -53,7 +53,8 @@ std::optional<CameraProblem> cameraProblem(const Camera& c) {
     return isFinite(v) && limits::kCoordinate.contains(v.x) && limits::kCoordinate.contains(v.y) &&
            limits::kCoordinate.contains(v.z);
   };
-  const std::string coords = "must be 3 numbers " + limits::kCoordinate.describe();
+  const std::string coords = "must be 3 numbers in [" + shortNumber(limits::kCoordinate.min) + ", " +
+                             shortNumber(limits::kCoordinate.max) + "] " + limits::kCoordinate.unit;
   if (!coordinate(c.position)) return P{P::Position, coords};
   if (!coordinate(c.focalPoint)) return P{P::FocalPoint, coords};
   if (!isFinite(c.viewUp)) return P{P::ViewUp, "must be 3 finite numbers"};
