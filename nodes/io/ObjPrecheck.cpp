@@ -4,7 +4,6 @@
 // negative indices. Every statement that defines geometry is checked here, with its line number;
 // statements that do not (groups, materials, smoothing, lines, points) pass untouched.
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -85,9 +84,8 @@ void checkMaterialLibrary(const std::string& objPath, const TextLines& lines) {
 
 }  // namespace
 
-void precheckObj(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open the file");
+void precheckObj(std::string_view data, const std::string& path) {
+  ViewStream in(data);
   TextLines line(in, '#');
   ObjCounts n;
   while (line.next()) {

@@ -3,7 +3,6 @@
 // each face's declared vertex count, so a bad count means billions of iterations or allocations.
 // Walking the file once here is cheap (no allocation per element) and yields precise messages.
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,9 +46,9 @@ OffHeader parseOffKeyword(const std::string& line) {
 
 }  // namespace
 
-void precheckOff(const std::string& path, std::uintmax_t fileSize) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open the file");
+void precheckOff(std::string_view data) {
+  const std::uintmax_t fileSize = data.size();
+  ViewStream in(data);
   std::string first;
   std::getline(in, first);
   const OffHeader h = parseOffKeyword(trim(first));

@@ -97,9 +97,9 @@ PlyProperty parseProperty(std::istream& in, const PlyElement& e) {
 // Reads the header token by token, exactly as OpenMesh's PLY reader does, so that anything its
 // reader would choke on is reported here instead. The body starts where OpenMesh seeks to for
 // binary files.
-PlyHeader parseHeader(const std::string& data) {
+PlyHeader parseHeader(std::string_view data) {
   PlyHeader h;
-  std::istringstream in(data);
+  ViewStream in(data);
   std::string line;
   std::getline(in, line);
   if (trim(line) != "ply" && trim(line) != "PLY")
@@ -179,8 +179,8 @@ double asciiValue(const PlyType& t, const std::string& tok, const PlyElement& e,
                                          std::to_string(maxOf(t)) + "]"));
 }
 
-void walkAscii(const PlyHeader& h, const std::string& data) {
-  std::istringstream in(data.substr(h.bodyOffset));
+void walkAscii(const PlyHeader& h, std::string_view data) {
+  ViewStream in(data.substr(h.bodyOffset));
   std::string tok;
   for (const auto& e : h.elements) {
     for (std::uint64_t i = 0; i < e.count; ++i)
@@ -221,7 +221,7 @@ double binaryValue(const unsigned char* p, const PlyType& t, bool bigEndian) {
   return double(bits);
 }
 
-void walkBinary(const PlyHeader& h, const std::string& data) {
+void walkBinary(const PlyHeader& h, std::string_view data) {
   const bool big = h.format == PlyFormat::BinaryBE;
   const auto* p = reinterpret_cast<const unsigned char*>(data.data()) + h.bodyOffset;
   const auto* end = reinterpret_cast<const unsigned char*>(data.data()) + data.size();
@@ -259,12 +259,7 @@ void walkBinary(const PlyHeader& h, const std::string& data) {
 
 }  // namespace
 
-void precheckPly(const std::string& path, std::uintmax_t fileSize) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open the file");
-  std::string data;
-  data.reserve(static_cast<std::size_t>(fileSize));
-  data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+void precheckPly(std::string_view data) {
   const PlyHeader h = parseHeader(data);
   bool hasVertices = false;
   for (const auto& e : h.elements) hasVertices = hasVertices || e.name == "vertex";

@@ -64,11 +64,36 @@ class TokenStream {
 
 std::string trim(const std::string& s);
 
-void precheckOff(const std::string& path, std::uintmax_t fileSize);
-void precheckPly(const std::string& path, std::uintmax_t fileSize);
-void precheckObj(const std::string& path);
-void precheckStl(const std::string& path, std::uintmax_t fileSize);
-void precheckVtkLegacy(const std::string& path, std::uintmax_t fileSize);
-void precheckVtkXml(const std::string& path, const std::string& ext, std::uintmax_t fileSize);
+// An input stream over bytes already in memory, without copying them.
+class ViewStream : public std::istream {
+ public:
+  explicit ViewStream(std::string_view data) : std::istream(&buf_), buf_(data) {}
+
+ private:
+  struct ViewBuf : std::streambuf {
+    explicit ViewBuf(std::string_view d) {
+      char* p = const_cast<char*>(d.data());
+      setg(p, p, p + d.size());
+    }
+    pos_type seekoff(off_type off, std::ios_base::seekdir dir, std::ios_base::openmode) override {
+      char* target = (dir == std::ios_base::beg ? eback() : dir == std::ios_base::cur ? gptr() : egptr()) + off;
+      if (target < eback() || target > egptr()) return pos_type(off_type(-1));
+      setg(eback(), target, egptr());
+      return pos_type(target - eback());
+    }
+    pos_type seekpos(pos_type pos, std::ios_base::openmode which) override {
+      return seekoff(off_type(pos), std::ios_base::beg, which);
+    }
+  } buf_;
+};
+
+// The checks, one file per format, on the whole file's bytes. `path` (OBJ) locates the files a
+// file refers to.
+void precheckOff(std::string_view data);
+void precheckPly(std::string_view data);
+void precheckObj(std::string_view data, const std::string& path);
+void precheckStl(std::string_view data);
+void precheckVtkLegacy(std::string_view data);
+void precheckVtkXml(std::string_view data, const std::string& ext);
 
 }  // namespace aokit

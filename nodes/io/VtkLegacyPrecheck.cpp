@@ -6,9 +6,7 @@
 // Supported: DATASET POLYDATA and UNSTRUCTURED_GRID, file versions 1.0 to 5.1, ASCII and BINARY.
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -373,12 +371,7 @@ class LegacyVtk {
 
 }  // namespace
 
-void precheckVtkLegacy(const std::string& path, std::uintmax_t fileSize) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open the file");
-  std::string data;
-  data.reserve(static_cast<std::size_t>(fileSize));
-  data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+void precheckVtkLegacy(std::string_view data) {
   LegacyVtk(data).check();
 }
 

@@ -5,8 +5,6 @@
 // against the format's rules and the bytes present, and every array is read once: values against
 // their type, points for finite coordinates, cells against the points and their type's size.
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -275,12 +273,7 @@ class VtkXml {
 
 }  // namespace
 
-void precheckVtkXml(const std::string& path, const std::string& ext, std::uintmax_t fileSize) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open the file");
-  std::string data;
-  data.reserve(static_cast<std::size_t>(fileSize));
-  data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+void precheckVtkXml(std::string_view data, const std::string& ext) {
   VtkXml(data, ext).check();
 }
 

@@ -4,6 +4,7 @@
 // use the specimen's field map and know that their mutant must be refused ("mustRefuse"): a
 // reader that accepts one has invented geometry from garbage (issue 10 item 1).
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <initializer_list>
@@ -192,9 +193,12 @@ inline bool apply(const std::string& cls, const Specimen& s, Rng& rng, Mutant& m
     const auto spans = spansOf(s, {Field::JsonNumber});
     if (spans.empty()) return false;
     const Span& sp = *rng.pick(spans);
-    std::vector<double> outside{sp.min > 1e-200 ? sp.min - 1 : -1.0, sp.max * 2 + 1};
+    // Below and above the range by at least 1 (or by its own size), and a fraction for integers.
+    const bool positive = sp.min > 0 && sp.min < 1e-100;  // "> 0" ranges
+    std::vector<double> outside{positive ? 0.0 : sp.min - std::max(1.0, std::fabs(sp.min)),
+                                sp.max + std::max(1.0, std::fabs(sp.max))};
+    if (positive) outside.push_back(-1.0);
     if (sp.integer) outside.push_back(sp.min + 0.5);
-    if (sp.min > 1e-200 && sp.min < 1e-100) outside.push_back(0.0);
     replace(b, sp, number(rng.pick(outside)));
     m.mustRefuse = true;
   } else if (cls == "json-not-finite" || cls == "json-wrong-type") {
