@@ -235,7 +235,8 @@ class VtkXml {
       if (!s.connectivity || !s.offsets || (kind == "Cells" && !s.types))
         fail(tag, "<" + kind + "> of " + std::to_string(s.count) + " cells lacks its connectivity, offsets" +
                       (kind == "Cells" ? " or types" : "") + " array");
-      auto fail = [&](const std::string& what) { throw std::runtime_error(s.at + what); };
+      const std::string& at = s.at;  // (a structured binding cannot be captured in C++17)
+      auto fail = [&at](const std::string& what) { throw std::runtime_error(at + what); };
       const auto& conn = *s.connectivity;
       const std::uint64_t least = kind == "Verts" ? 1 : kind == "Lines" ? 2 : 3;
       std::uint64_t start = 0;
