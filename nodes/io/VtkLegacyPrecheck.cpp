@@ -61,7 +61,7 @@ class LegacyVtk {
       const std::string key = keyword();
       if (key == "points") points();
       else if (key == "field") field();
-      else if (key == "metadata") metadata();
+      else if (key == "metadata") fail("METADATA outside an array");
       else if (key == "point_data" || key == "cell_data") return attributes(key);
       else if (grid_ && key == "cells") gridCells();
       else if (grid_ && key == "cell_types") cellTypes();
@@ -163,14 +163,27 @@ class LegacyVtk {
   }
 
   // A data array's optional METADATA block: lines up to an empty one, as VTK reads it.
+  // A METADATA block: its keyword line, then lines up to an empty one. VTK reads these lines as C
+  // strings, so a line that starts with a NUL byte ends the block too.
   void metadata() {
-    if (lower(in_.peek()) == "metadata") in_.next();
     in_.skipLine();
-    while (in_.position() < data_.size() && !in_.restOfLine().empty()) {
+    for (std::string_view line; in_.position() < data_.size();) {
+      line = in_.restOfLine();
+      if (line.empty() || line[0] == '\0') break;
     }
   }
+  // After an array, vtkDataReader skips blank lines made of ' ', '\r' and '\n' only and takes a
+  // line starting with "metadata" (any case) for a METADATA block. Anything else that reads as
+  // METADATA to a tokenizer (after a tab, say) VTK would parse as a keyword: refused.
   void optionalMetadata() {
-    if (lower(in_.peek()) == "metadata") metadata();
+    std::size_t p = in_.position();
+    while (p < data_.size() && (data_[p] == ' ' || data_[p] == '\r' || data_[p] == '\n')) ++p;
+    if (lower(data_.substr(p, 8)) == "metadata") {
+      in_.seek(p);
+      metadata();
+    } else if (lower(in_.peek()) == "metadata") {
+      fail("METADATA must start its own line");
+    }
   }
 
   void points() {
