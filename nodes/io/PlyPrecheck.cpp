@@ -5,6 +5,7 @@
 // every coordinate for being finite and every face index against the vertex count, bounded by
 // the bytes actually present.
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -136,7 +137,8 @@ PlyHeader parseHeader(std::string_view data) {
       throw std::runtime_error("PLY header: element '" + printable(e.name) + "' has " + std::to_string(e.count) +
                                " items but no properties");
   if (h.format == PlyFormat::Ascii) {
-    h.bodyOffset = static_cast<std::size_t>(in.tellg());
+    const std::streamoff body = in.tellg();  // -1 when end_header ends the file
+    h.bodyOffset = body < 0 ? data.size() : static_cast<std::size_t>(body);
   } else {
     // OpenMesh skips "\nend_header\n" (or its \r\n form) after the preceding token.
     const auto p = static_cast<std::size_t>(beforeEnd);
@@ -162,11 +164,14 @@ long long maxOf(const PlyType& t) { return t.isSigned ? (1LL << (8 * t.size - 1)
 
 // Checks one value of property `p` of item i (already read as a number) in its role.
 void checkValue(const PlyHeader& h, const PlyProperty& p, double v, const PlyElement& e, std::uint64_t i) {
-  if (p.role == Role::Coordinate && !std::isfinite(static_cast<float>(v)))
+  if (p.role == Role::Coordinate && !finiteAsFloat(v))
     throw std::runtime_error(item(e, i) + " has a NaN or infinite coordinate");
-  if (p.role == Role::FaceIndices && (v < 0 || v >= double(h.vertices)))
-    throw std::runtime_error(item(e, i) + " refers to vertex " + std::to_string(static_cast<long long>(v)) +
-                             ", but the file has " + std::to_string(h.vertices) + " vertices");
+  if (p.role == Role::FaceIndices && (v < 0 || v >= double(h.vertices))) {
+    char index[32];
+    std::snprintf(index, sizeof index, "%.0f", v);
+    throw std::runtime_error(item(e, i) + " refers to vertex " + index + ", but the file has " +
+                             std::to_string(h.vertices) + " vertices");
+  }
 }
 
 double asciiValue(const PlyType& t, const std::string& tok, const PlyElement& e, std::uint64_t i) {

@@ -84,12 +84,13 @@ bool parseInteger(std::string_view token, long long min, long long max, long lon
   return true;
 }
 
+bool finiteAsFloat(double v) { return std::isfinite(v) && std::fabs(v) <= double(std::numeric_limits<float>::max()); }
+
 float parseCoordinate(std::string_view token, const std::string& where) {
   double v = 0.0;
   if (!parseReal(token, v)) throw std::runtime_error(where + ": '" + printable(token) + "' is not a number");
-  const float f = static_cast<float>(v);
-  if (!std::isfinite(f)) throw std::runtime_error(where + " has a NaN or infinite coordinate");
-  return f;
+  if (!finiteAsFloat(v)) throw std::runtime_error(where + " has a NaN or infinite coordinate");
+  return static_cast<float>(v);
 }
 
 double parseRealField(std::string_view token, const std::string& where) {

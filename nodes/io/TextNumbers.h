@@ -18,6 +18,10 @@ bool parseReal(std::string_view token, double& value);
 // Decimal integer with an optional sign, all of the token, within [min, max].
 bool parseInteger(std::string_view token, long long min, long long max, long long& value);
 
+// Whether `v` is a finite float once stored as one (|v| <= FLT_MAX; beyond it the conversion
+// would overflow, which C++ leaves undefined).
+bool finiteAsFloat(double v);
+
 // A coordinate of a position: a number that is finite as a float (what the mesh stores).
 // Throws std::runtime_error "<where>: '<token>' is not a number" or
 // "<where> has a NaN or infinite coordinate".

@@ -51,6 +51,10 @@ ValueType valueType(const std::string& name, const std::string& at) {
 
 using Visit = std::function<void(std::uint64_t index, double value)>;
 
+// A point id from a value read as double: ones beyond any point count (or not whole) become -1,
+// which every range check refuses.
+long long asId(double v) { return v >= 0 && v <= 9e18 && v == std::floor(v) ? static_cast<long long>(v) : -1; }
+
 class LegacyVtk {
  public:
   explicit LegacyVtk(std::string_view data) : data_(data), in_(data) {}
@@ -192,7 +196,7 @@ class LegacyVtk {
     const std::string at = in_.at();
     const ValueType t = valueType(std::string(in_.next()), at);
     values(t, 3 * std::uint64_t(n), "POINTS", [&](std::uint64_t i, double v) {
-      if (!std::isfinite(static_cast<float>(v)))
+      if (!finiteAsFloat(v))
         fail("point " + std::to_string(i / 3) + " has a NaN or infinite coordinate");
     });
     points_ = n;
@@ -232,7 +236,7 @@ class LegacyVtk {
       optionalMetadata();
       if (keyword() != "connectivity") fail(what + ": expected CONNECTIVITY");
       values(valueType(std::string(in_.next()), in_.at()), nConn, what + " CONNECTIVITY",
-             [&](std::uint64_t, double v) { list.ids.push_back(static_cast<long long>(v)); });
+             [&](std::uint64_t, double v) { list.ids.push_back(asId(v)); });
       if (onCell)
         for (std::size_t c = 0; c + 1 < list.offsets.size(); ++c)
           onCell(c, list.ids.data() + list.offsets[c], list.offsets[c + 1] - list.offsets[c]);
@@ -249,7 +253,7 @@ class LegacyVtk {
         left = static_cast<std::uint64_t>(v);
         expectCount = left == 0;
       } else {
-        list.ids.push_back(static_cast<long long>(v));
+        list.ids.push_back(asId(v));
         expectCount = --left == 0;
       }
       if (expectCount) {

@@ -27,31 +27,10 @@
 namespace aokit {
 namespace {
 
-// Collects VTK's error and warning text instead of printing it. VTK routes every vtkErrorMacro
+// Installs a VtkErrorWindow (output/VtkErrorWindow.h) for one scope and mutes vtkLogger, which
+// prints every error to stderr before the output window sees it. VTK routes every vtkErrorMacro
 // without an observer to the one global output window; XML readers report through internal parser
-// objects we cannot attach observers to, so swapping the window is the one place to catch it all.
-class CapturingOutputWindow : public vtkOutputWindow {
- public:
-  static CapturingOutputWindow* New();
-  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
-
-  void DisplayText(const char*) override {}
-  void DisplayErrorText(const char* text) override { keep(text); }
-  void DisplayWarningText(const char*) override {}
-  void DisplayGenericWarningText(const char*) override {}
-  void DisplayDebugText(const char*) override {}
-  const std::string& firstError() const { return first_; }
-
- private:
-  void keep(const char* text) {
-    if (first_.empty() && text) first_ = text;
-  }
-  std::string first_;
-};
-vtkStandardNewMacro(CapturingOutputWindow);
-
-// Installs a CapturingOutputWindow for one scope and mutes vtkLogger, which prints every error to
-// stderr before the output window sees it. vtkLogger has no getter for its stderr level; the
+// objects we cannot attach observers to, so swapping the window is the one place to catch it all. vtkLogger has no getter for its stderr level; the
 // overall cutoff equals it unless log files or callbacks were added. Global state: callers hold
 // vtkReadMutex.
 class ScopedVtkCapture {
@@ -66,12 +45,12 @@ class ScopedVtkCapture {
   }
   ScopedVtkCapture(const ScopedVtkCapture&) = delete;
   ScopedVtkCapture& operator=(const ScopedVtkCapture&) = delete;
-  const std::string& firstError() const { return window_->firstError(); }
+  std::string takeError() { return window_->takeError(); }
 
  private:
   vtkSmartPointer<vtkOutputWindow> previous_;
   vtkLogger::Verbosity logLevel_;
-  vtkNew<CapturingOutputWindow> window_;
+  vtkNew<VtkErrorWindow> window_;
 };
 
 std::mutex vtkReadMutex;
@@ -146,8 +125,8 @@ bool readWithVtk(const std::string& path, VtkFormat format, TriangleMesh& out, s
     why = "out of memory while reading";
     return false;
   }
-  if (!capture.firstError().empty()) {
-    why = vtkMessageText(capture.firstError());
+  if (std::string error = capture.takeError(); !error.empty()) {
+    why = std::move(error);
     return false;
   }
   TriangleMesh mesh;

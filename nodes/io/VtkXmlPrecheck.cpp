@@ -4,6 +4,7 @@
 // to filters that read past their arrays. Every attribute that sizes something is checked here
 // against the format's rules and the bytes present, and every array is read once: values against
 // their type, points for finite coordinates, cells against the points and their type's size.
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -199,6 +200,7 @@ class VtkXml {
       tuples = *declaredTuples;
     }
     if ((store || section) && components != 1) throw std::runtime_error(label + ": cell arrays have 1 component");
+    if (store && type.real) throw std::runtime_error(label + ": cell arrays hold integers, not " + std::string(typeName));
     std::optional<std::uint64_t> expected;
     if (tuples) expected = *tuples * std::uint64_t(components);
 
@@ -215,9 +217,9 @@ class VtkXml {
         enc_, tag.attribute("format").value_or(""), tag.selfClosing ? std::string_view() : scan_.textAt(tag.end), offset,
         type, expected, label,
         [&](std::uint64_t i, double v) {
-          if (points && !std::isfinite(static_cast<float>(v)))
+          if (points && !finiteAsFloat(v))
             throw std::runtime_error(label + ": point " + std::to_string(i / 3) + " has a NaN or infinite coordinate");
-          if (store) store->push_back(v >= -9e18 && v <= 9e18 ? static_cast<long long>(v) : -1);
+          if (store) store->push_back(v >= -2e9 && v <= 9e18 ? static_cast<long long>(v) : -1);
         },
         found);
     if (found % std::uint64_t(components) != 0)
@@ -248,7 +250,7 @@ class VtkXml {
         const std::uint64_t n = std::uint64_t(end) - start;
         std::string problem;
         if (kind == "Cells")
-          problem = checkCell(static_cast<int>((*s.types)[c]), conn.data() + start, n, p.points, false);
+          problem = checkCell(int(std::clamp((*s.types)[c], -1LL, 255LL)), conn.data() + start, n, p.points, false);
         else if (n < least)
           problem = "has " + std::to_string(n) + " points, fewer than " + std::to_string(least);
         for (std::uint64_t k = start; problem.empty() && k < std::uint64_t(end); ++k)
