@@ -226,7 +226,8 @@ Scene loadSceneFile(const std::string& path) {
   if (!fs::exists(path, ec)) throw std::runtime_error(path + ": no such file");
   if (!fs::is_regular_file(path, ec)) throw std::runtime_error(path + ": not a regular file");
   noteInputFile(path);
-  if (fs::file_size(path, ec) > (std::uintmax_t(64) << 20)) throw std::runtime_error(path + ": larger than 64 MiB, too large for a scene file");
+  if (const auto size = fs::file_size(path, ec); !ec && size > (std::uintmax_t(64) << 20))
+    throw std::runtime_error(path + ": larger than 64 MiB, too large for a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open the file");
   std::ostringstream text;
