@@ -15,11 +15,18 @@
 
 namespace aokit::cli {
 
+CLI::Validator inRange(const NumberRange& range) {
+  return CLI::Validator(
+      [range](std::string& text) {
+        const std::string problem = range.problemWith(text);
+        return problem.empty() ? std::string() : "'" + text + "' " + problem;
+      },
+      range.describe());
+}
+
 namespace {
 glm::dvec3 vec3Option(const std::vector<double>& v, const char* name) {
   if (v.size() != 3) throw std::invalid_argument(std::string(name) + " needs three numbers x,y,z");
-  for (double x : v)
-    if (!std::isfinite(x)) throw std::invalid_argument(std::string(name) + " must be finite");
   return {v[0], v[1], v[2]};
 }
 
@@ -107,11 +114,13 @@ void SceneOptions::add(CLI::App& cmd) {
   cmd.add_option("--scene,-s", scene, "built-in scene (" + known + "), .json scene file or mesh file")
       ->default_str("sphere-plane");
   cmd.add_option("--size", size, "image size WxH")->capture_default_str();
-  cmd.add_option("--camera-position", cameraPosition, "camera position x y z")->expected(3)->delimiter(',');
-  cmd.add_option("--focal-point", focalPoint, "camera focal point x y z")->expected(3)->delimiter(',');
-  cmd.add_option("--view-up", viewUp, "camera view-up x y z")->expected(3)->delimiter(',');
-  cmd.add_option("--view-angle", viewAngle, "vertical view angle, degrees (1..179)");
-  cmd.add_option("--ao-radius", aoRadius, "AO radius R in world units (default: the scene's)");
+  const CLI::Validator coordinate = inRange(limits::kCoordinate);
+  cmd.add_option("--camera-position", cameraPosition, "camera position x,y,z")->expected(3)->delimiter(',')->check(coordinate);
+  cmd.add_option("--focal-point", focalPoint, "camera focal point x,y,z")->expected(3)->delimiter(',')->check(coordinate);
+  cmd.add_option("--view-up", viewUp, "camera view-up x,y,z")->expected(3)->delimiter(',')->check(coordinate);
+  cmd.add_option("--view-angle", viewAngle, "vertical view angle, degrees (1..179)")->check(inRange(limits::kViewAngle));
+  cmd.add_option("--ao-radius", aoRadius, "AO radius R in world units (default: the scene's)")
+      ->check(inRange(limits::kAORadius));
 }
 
 void SceneOptions::addPositional(CLI::App& cmd) {
@@ -130,16 +139,17 @@ Scene SceneOptions::load() const {
   if (!cameraPosition.empty()) s.camera.position = vec3Option(cameraPosition, "--camera-position");
   if (!focalPoint.empty()) s.camera.focalPoint = vec3Option(focalPoint, "--focal-point");
   if (!viewUp.empty()) s.camera.viewUp = vec3Option(viewUp, "--view-up");
-  if (viewAngle) {
-    if (!(*viewAngle >= 1.0 && *viewAngle <= 179.0)) throw std::invalid_argument("--view-angle must be in 1..179");
-    s.camera.viewAngleDeg = *viewAngle;
+  if (viewAngle) s.camera.viewAngleDeg = *viewAngle;
+  if (aoRadius) s.root->setAORadius(*aoRadius);
+  // The camera as a whole, as the scene-file reader checks it: name the option that set the field.
+  if (const auto problem = cameraProblem(s.camera)) {
+    static const char* const options[] = {"--camera-position", "--focal-point", "--view-up", "--view-angle"};
+    static const char* const fields[] = {"position", "focal point", "view-up", "view angle"};
+    const bool given[] = {!cameraPosition.empty(), !focalPoint.empty(), !viewUp.empty(), viewAngle.has_value()};
+    const int f = problem->field;
+    throw std::invalid_argument((given[f] ? std::string(options[f]) : "the camera's " + std::string(fields[f])) + " " +
+                                problem->what + (given[f] ? "" : std::string(" (set ") + options[f] + ")"));
   }
-  if (aoRadius) {
-    if (!(*aoRadius > 0.0) || !std::isfinite(*aoRadius)) throw std::invalid_argument("--ao-radius must be positive");
-    s.root->setAORadius(*aoRadius);
-  }
-  if (glm::length(s.camera.position - s.camera.focalPoint) <= 0.0)
-    throw std::invalid_argument("camera position and focal point coincide");
   return s;
 }
 

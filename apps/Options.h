@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "core/Scene.h"
+#include "io/SceneLimits.h"
 
 namespace aokit::cli {
 
@@ -28,6 +29,11 @@ struct SceneOptions {
   // Parses "WxH" (1..8192 each).
   void imageSize(int& width, int& height) const;
 };
+
+// Checks an option's text against an entry of the one table of ranges (io/SceneLimits.h) before
+// CLI11 converts it (which would wrap "-1" into an unsigned seed): "--seed: '-1' is not a whole
+// number in [0, 18446744073709551615]".
+CLI::Validator inRange(const NumberRange& range);
 
 // A built-in scene name, a .json scene file or a mesh file -> Scene.
 Scene resolveScene(const std::string& spec);

@@ -5,6 +5,7 @@
 #include "Options.h"
 #include "core/Progress.h"
 #include "output/ImageFiles.h"
+#include "output/OutputPaths.h"
 #include "reference/AOReference.h"
 #include "reference/EmbreeScene.h"
 #include "reference/Falloff.h"
@@ -30,6 +31,7 @@ void runReference(const ReferenceArgs& a) {
   if (a.quantity != "occlusion" && a.quantity != "transfer")
     throw std::invalid_argument("--quantity must be occlusion or transfer, got '" + a.quantity + "'");
   Scene scene = a.scene.load();
+  checkOutputPaths({a.output + ".png", a.output + ".f32", a.output + "-stderr.f32"});
   applyFalloff(scene, a.falloff);
   SceneView view(scene, w, h);
   const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
@@ -61,7 +63,7 @@ void addReferenceCommand(CLI::App& app) {
   cmd->add_option("--quantity", args->quantity,
                   "occlusion, or transfer (1 - W, the ambient transfer of seed 003, eq. 6, from the albedos)")
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "sampling seed")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "sampling seed")->capture_default_str()->check(inRange(limits::kSeed64));
   cmd->add_option("--output,-o", args->output, "output prefix: PREFIX.png, PREFIX.f32, PREFIX-stderr.f32")
       ->capture_default_str();
   cmd->callback([args] { runReference(*args); });

@@ -7,6 +7,7 @@
 #include "output/ImageFiles.h"
 #include "headless/FrameCapture.h"
 #include "headless/SceneView.h"
+#include "output/OutputPaths.h"
 
 namespace aokit::cli {
 
@@ -28,6 +29,7 @@ void runRender(const RenderArgs& a) {
   a.scene.imageSize(w, h);
   if (a.settingGiven && a.setting.empty()) throw std::invalid_argument("--setting is empty (give key=value[,key=value])");
   Scene scene = a.scene.load();
+  checkOutputPaths({a.output, a.aoFloat});
   applyFalloff(scene, a.falloff);
   if (a.frame < 0 || a.frame >= scene.frameCount)
     throw std::invalid_argument("--frame " + std::to_string(a.frame) + " is out of range (scene has " +

@@ -5,6 +5,7 @@
 
 #include "Commands.h"
 #include "core/Progress.h"
+#include "output/VtkErrorWindow.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"aokit: ambient occlusion nodes for VTK, rendered headless through OSMesa"};
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   aokit::cli::addDemoCommand(app);
   aokit::cli::addBakeCommand(app);
   aokit::installInterruptHandler();
+  aokit::routeVtkMessagesToErrors();  // VTK's own error text joins aokit's one line instead of printing
   if (argc > 1 && argv[1][0] != '-') {
     std::string known;
     bool found = false;
@@ -40,5 +42,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "aokit: error: %s\n", e.what());
     return 1;
   }
+  if (const std::string vtk = aokit::takeVtkError(); !vtk.empty())
+    std::fprintf(stderr, "aokit: warning: VTK reported an error: %s\n", vtk.c_str());
   return 0;
 }

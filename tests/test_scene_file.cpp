@@ -174,9 +174,9 @@ TEST_F(SceneFile, MalformedInputs) {
   expectError(scene(R"({"position": [0, 1], "focalPoint": [0, 0, 0]})", kBox), "camera.position: expected 3 finite numbers");
   expectError(scene(R"({"position": [0, 1, 2]})", kBox), "camera: missing required key 'focalPoint'");
   expectError(scene(R"({"position": [0, 0, 1], "focalPoint": [0, 0, 0], "viewAngle": 200})", kBox),
-              "camera.viewAngle: expected a number in [0.001, 179]");
+              "camera.viewAngle: expected a number in [1, 179] degrees");
   expectError(scene(R"({"position": [0, 0, 5], "focalPoint": [0, 0, 0]})", kBox), "camera: viewUp is parallel to the view direction");
-  expectError(scene(R"({"position": [0, 0, 5], "focalPoint": [0, 0, 5]})", kBox), "camera: position and focalPoint coincide");
+  expectError(scene(R"({"position": [0, 0, 5], "focalPoint": [0, 0, 5]})", kBox), "camera: focalPoint coincides with the camera position");
   expectError(scene(R"({"position": [0, 0, 5], "focalPoint": [0, 0, 0], "fov": 3})", kBox), "camera.fov: unknown key");
 
   expectError(scene(kCam, "[]"), "objects: expected at least one object");

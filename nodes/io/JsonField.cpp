@@ -75,11 +75,20 @@ double JsonField::number(double min, double max) const {
   return v;
 }
 
-double JsonField::positive() const {
+double JsonField::number(const NumberRange& range) const {
   if (!value_.is_number()) fail("expected a number");
   const double v = value_.get<double>();
-  if (!std::isfinite(v) || !(v > 0.0)) fail("expected a positive number");
+  if (!range.contains(v)) fail("expected " + range.describe());
   return v;
+}
+
+double JsonField::positive() const { return number(limits::kLength); }
+
+long long JsonField::whole(const NumberRange& range) const {
+  if (!value_.is_number_integer()) fail("expected " + range.describe());
+  const double v = value_.is_number_unsigned() ? double(value_.get<std::uint64_t>()) : double(value_.get<long long>());
+  if (!range.contains(v)) fail("expected " + range.describe());
+  return value_.is_number_unsigned() ? static_cast<long long>(value_.get<std::uint64_t>()) : value_.get<long long>();
 }
 
 int JsonField::integer(int min, int max) const {
@@ -102,8 +111,9 @@ std::vector<double> JsonField::numbers(std::size_t n, double min, double max, co
 }
 
 glm::dvec3 JsonField::vec3() const {
-  const auto v = numbers(3, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-                         "3 finite numbers");
+  const auto v = numbers(3, limits::kCoordinate.min, limits::kCoordinate.max,
+                         "3 finite numbers in [" + shortNumber(limits::kCoordinate.min) + ", " +
+                             shortNumber(limits::kCoordinate.max) + "]");
   return {v[0], v[1], v[2]};
 }
 

@@ -9,6 +9,8 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "io/SceneLimits.h"
+
 namespace aokit {
 
 class JsonField {
@@ -31,11 +33,13 @@ class JsonField {
   std::string string() const;
   bool boolean() const;
   double number(double min = -1e300, double max = 1e300) const;  // finite, in [min, max]
-  double positive() const;                                       // finite, > 0
+  double number(const NumberRange& range) const;                 // "expected <range.describe()>"
+  double positive() const;                                       // limits::kLength: > 0, at most 1e15
   int integer(int min, int max) const;
+  long long whole(const NumberRange& range) const;               // an integer JSON number in range
   // Exactly n numbers in [min, max]; `what` words the error ("3 numbers in [0, 1]").
   std::vector<double> numbers(std::size_t n, double min, double max, const std::string& what) const;
-  glm::dvec3 vec3() const;
+  glm::dvec3 vec3() const;  // 3 numbers within limits::kCoordinate
 
  private:
   const nlohmann::json& value_;

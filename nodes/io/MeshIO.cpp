@@ -3,16 +3,24 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
+#include "io/InputFiles.h"
 #include "io/IsolatedRead.h"
 #include "io/MeshReaders.h"
+#include "io/SceneLimits.h"
+#include "io/StlFormat.h"
 
 namespace aokit {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(1) << 30;
 
 constexpr const char* kExtensions[] = {".off", ".obj", ".ply", ".stl", ".vtp", ".vtu", ".vtk"};
 
@@ -26,6 +34,21 @@ std::string oneLine(std::string s) {
   std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
   while (!s.empty() && s.back() == ' ') s.pop_back();
   return s.empty() ? std::string("unknown error") : s;
+}
+
+// Finite but astronomically large coordinates (3e38) overflow the camera and ray arithmetic
+// downstream: positions must lie within the range the CLI and scene files accept.
+void checkCoordinateRange(const TriangleMesh& m) {
+  const NumberRange& r = limits::kCoordinate;
+  for (std::size_t i = 0; i < m.positions.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (!r.contains(m.positions[i][k]))
+      {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", double(m.positions[i][k]));
+        throw std::runtime_error("vertex " + std::to_string(i) + " has coordinate " + value + ", outside " +
+                                 r.describe().substr(std::string("a number in ").size()));
+      }
 }
 
 // Keeps file normals only when they are all usable, then makes them unit length.
@@ -43,29 +66,38 @@ void finishNormals(TriangleMesh& m) {
   for (auto& n : m.normals) n = glm::normalize(n);
 }
 
-bool viaOpenMesh(const std::string& ext) { return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl"; }
-bool vtkFallback(const std::string& ext) { return ext == ".obj" || ext == ".stl"; }
+bool viaOpenMesh(const std::string& ext) { return ext == ".off" || ext == ".obj" || ext == ".ply"; }
 std::string readerNames(const std::string& ext) {
-  return !viaOpenMesh(ext) ? "VTK" : vtkFallback(ext) ? "OpenMesh or VTK" : "OpenMesh";
+  return ext == ".obj" ? "OpenMesh or VTK" : viaOpenMesh(ext) ? "OpenMesh" : "VTK";
 }
 
-// The library readers: OpenMesh first where it applies, VTK for its own formats and as a second
-// opinion on OBJ and STL. Runs in the reader process (see IsolatedRead.h).
+std::string wholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open the file");
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The readers: aokit's own for STL (io/StlFormat.h), OpenMesh for OFF, OBJ and PLY, VTK for its
+// own formats and as a second opinion on OBJ. Runs in the reader process (see IsolatedRead.h).
 ReadResult readWithLibraries(const std::string& path, const std::string& ext) {
   ReadResult r;
+  if (ext == ".stl") {
+    r.mesh = parseStl(wholeFile(path));
+    r.ok = true;
+    return r;
+  }
   if (viaOpenMesh(ext)) {
-    // OBJ and STL normals are per face corner; OpenMesh would collapse them onto shared vertices,
-    // so only formats with true per-vertex normals ask for them.
+    // OBJ normals are per face corner; OpenMesh would collapse them onto shared vertices, so only
+    // formats with true per-vertex normals ask for them.
     r.ok = readWithOpenMesh(path, ext == ".off" || ext == ".ply", r.mesh, r.why);
   }
   // VTK also gets a go when OpenMesh found no faces: its readers know other dialects. Not for OFF
   // (VTK has no reader) nor PLY (vtkPLYReader double-frees on corrupt files that pass our checks).
-  if ((!r.ok || r.mesh.triangles.empty()) && (vtkFallback(ext) || !viaOpenMesh(ext))) {
+  if ((!r.ok || r.mesh.triangles.empty()) && (ext == ".obj" || !viaOpenMesh(ext))) {
     const VtkFormat format = ext == ".vtp"   ? VtkFormat::XmlPolyData
                              : ext == ".vtu" ? VtkFormat::XmlUnstructuredGrid
                              : ext == ".vtk" ? VtkFormat::Legacy
-                             : ext == ".obj" ? VtkFormat::Obj
-                                             : VtkFormat::Stl;
+                                             : VtkFormat::Obj;
     TriangleMesh other;
     std::string vtkWhy;
     if (readWithVtk(path, format, other, vtkWhy) && (!r.ok || !other.triangles.empty())) {
@@ -84,12 +116,18 @@ TriangleMesh read(const std::string& path, const std::string& ext) {
   if (!fs::is_regular_file(status)) throw std::runtime_error("not a regular file");
   const auto size = fs::file_size(path, ec);
   if (ec || size == 0) throw std::runtime_error("file is empty");
+  // The checks and the readers hold a whole file in memory, more than once: a bound for all of them.
+  if (size > kMaxFileBytes)
+    throw std::runtime_error("file is " + std::to_string(size >> 20) + " MiB, more than the " +
+                             std::to_string(kMaxFileBytes >> 20) + " MiB aokit reads");
+  noteInputFile(path);
   precheckMeshFile(path, ext);
 
   ReadResult r = readIsolated([&] { return readWithLibraries(path, ext); }, size);
   if (!r.ok)
     throw std::runtime_error("not a mesh " + readerNames(ext) + " can read" + (r.why.empty() ? "" : " (" + r.why + ")"));
   r.mesh.validate();  // before the normals: computing them needs finite positions
+  checkCoordinateRange(r.mesh);
   finishNormals(r.mesh);
   return std::move(r.mesh);
 }

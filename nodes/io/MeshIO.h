@@ -1,7 +1,7 @@
 #pragma once
-// Loading triangle meshes from files: OFF, OBJ, PLY, STL through OpenMesh (VTK's readers as a
-// fallback for OBJ and STL; not for PLY, where vtkPLYReader crashes on corrupt files), VTP, VTU
-// and legacy VTK through VTK.
+// Loading triangle meshes from files: OFF, OBJ and PLY through OpenMesh (VTK's reader as a
+// fallback for OBJ; not for PLY, where vtkPLYReader crashes on corrupt files), STL by aokit itself
+// (io/StlFormat.h), VTP, VTU and legacy VTK through VTK.
 #include <string>
 #include <vector>
 
@@ -20,7 +20,8 @@ namespace aokit {
 // (declared counts, list lengths, index ranges, number syntax), since the library readers trust
 // them; the readers then run in a child process (IsolatedRead.h) whose crashes, hangs and
 // runaway allocations on corrupt files become errors too. Nothing is printed.
-// Limits: OFF must be ASCII with each face on one line.
+// Limits: files up to 1 GiB; OFF must be ASCII with each face on one line. README "Input
+// validation" lists what each format's checks refuse and which leniencies they keep.
 TriangleMesh loadMesh(const std::string& path);
 
 // The extensions loadMesh accepts, with the dot, lower case.

@@ -1,8 +1,11 @@
-// Structural check of PLY files before OpenMesh reads them. OpenMesh's PLY reader stops at the end
-// of the file between elements, but trusts each face's list length: a corrupt length makes it push
-// billions of indices. One walk over the body, following the header, bounds every list by the
-// bytes actually present, and catches truncation and non-finite coordinates with clear messages.
+// Structural check of PLY files before OpenMesh reads them. OpenMesh trusts the header (a version
+// it cannot parse sends its header loop spinning forever), each face's list length (a corrupt one
+// makes it push billions of indices) and every ASCII token (stream extraction shifts values past
+// a bad one). One walk over the body, following the header, checks every value against its type,
+// every coordinate for being finite and every face index against the vertex count, bounded by
+// the bytes actually present.
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -18,11 +21,37 @@ namespace {
 
 enum class PlyFormat { Ascii, BinaryLE, BinaryBE };
 
+struct PlyType {
+  int size = 0;  // 0: not a type
+  bool real = false, isSigned = false;
+};
+
+PlyType plyType(const std::string& t) {
+  if (t == "char" || t == "int8") return {1, false, true};
+  if (t == "uchar" || t == "uint8") return {1, false, false};
+  if (t == "short" || t == "int16") return {2, false, true};
+  if (t == "ushort" || t == "uint16") return {2, false, false};
+  if (t == "int" || t == "int32") return {4, false, true};
+  if (t == "uint" || t == "uint32") return {4, false, false};
+  if (t == "float" || t == "float32") return {4, true, true};
+  if (t == "double" || t == "float64") return {8, true, true};
+  return {};
+}
+
+PlyType knownType(const std::string& t) {
+  const PlyType type = plyType(t);
+  if (type.size == 0) throw std::runtime_error("PLY header: unknown type '" + printable(t) + "'");
+  return type;
+}
+
+enum class Role { Other, Coordinate, FaceIndices };
+
 struct PlyProperty {
   std::string name;
-  int size = 0;       // bytes of the scalar or of each list item
-  int countSize = 0;  // lists only: bytes of the length prefix
-  bool list() const { return countSize > 0; }
+  PlyType type;       // of the scalar, or of each list item
+  PlyType countType;  // lists only: of the length prefix (size 0 for scalars)
+  Role role = Role::Other;
+  bool list() const { return countType.size > 0; }
 };
 
 struct PlyElement {
@@ -31,34 +60,55 @@ struct PlyElement {
   std::vector<PlyProperty> props;
 };
 
-int typeSize(const std::string& t) {
-  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-  if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
-  if (t == "double" || t == "float64") return 8;
-  throw std::runtime_error("PLY header: unknown type '" + printable(t) + "'");
-}
-
 struct PlyHeader {
   PlyFormat format = PlyFormat::Ascii;
   std::vector<PlyElement> elements;
+  std::uint64_t vertices = 0;
   std::size_t bodyOffset = 0;
 };
 
+void checkVersion(const std::string& version) {
+  double v = 0.0;
+  if (!parseReal(version, v) || v != 1.0)
+    throw std::runtime_error("PLY header: version '" + printable(version) +
+                             "' is not 1.0 (the second line must be 'format <type> 1.0')");
+}
+
+PlyProperty parseProperty(std::istream& in, const PlyElement& e) {
+  PlyProperty p;
+  std::string a, b;
+  if (!(in >> a >> b)) throw std::runtime_error("PLY header is incomplete (no end_header)");
+  if (a == "list") {
+    std::string item;
+    if (!(in >> item >> p.name)) throw std::runtime_error("PLY header is incomplete (no end_header)");
+    p.countType = knownType(b);
+    if (p.countType.real) throw std::runtime_error("PLY header: list length type '" + printable(b) + "' is not an integer");
+    p.type = knownType(item);
+  } else {
+    // "property <type> <name>", or the reverse, which OpenMesh also accepts.
+    const bool typeFirst = plyType(a).size > 0;
+    p.type = knownType(typeFirst ? a : b);
+    p.name = typeFirst ? b : a;
+  }
+  if (e.name == "vertex" && !p.list() && (p.name == "x" || p.name == "y" || p.name == "z")) p.role = Role::Coordinate;
+  if (e.name == "face" && p.list() && (p.name == "vertex_indices" || p.name == "vertex_index")) p.role = Role::FaceIndices;
+  return p;
+}
+
 // Reads the header token by token, exactly as OpenMesh's PLY reader does, so that anything its
-// reader would choke on (a token that fails to parse leaves its header loop spinning forever) is
-// reported here instead. The body starts where OpenMesh seeks to for binary files.
-PlyHeader parseHeader(const std::string& data) {
+// reader would choke on is reported here instead. The body starts where OpenMesh seeks to for
+// binary files.
+PlyHeader parseHeader(std::string_view data) {
   PlyHeader h;
-  std::istringstream in(data);
+  ViewStream in(data);
   std::string line;
   std::getline(in, line);
   if (trim(line) != "ply" && trim(line) != "PLY")
     throw std::runtime_error("not a PLY file (first line '" + printable(trim(line)) + "')");
   std::string keyword, format, version;
-  double v = 0.0;
-  if (!(in >> keyword >> format >> version) || keyword != "format" || !parseNumber(version, v))
+  if (!(in >> keyword >> format >> version) || keyword != "format")
     throw std::runtime_error("PLY header: the second line must be 'format <type> 1.0'");
+  checkVersion(version);
   if (format == "ascii") h.format = PlyFormat::Ascii;
   else if (format == "binary_little_endian") h.format = PlyFormat::BinaryLE;
   else if (format == "binary_big_endian") h.format = PlyFormat::BinaryBE;
@@ -66,39 +116,29 @@ PlyHeader parseHeader(const std::string& data) {
 
   std::streamoff beforeEnd = in.tellg();  // position after the token preceding end_header
   while (in >> keyword && keyword != "end_header") {
-    if (keyword == "comment") {
+    if (keyword == "comment" || keyword == "obj_info") {
       std::getline(in, line);
     } else if (keyword == "element") {
       PlyElement e;
       std::string count;
       if (!(in >> e.name >> count)) break;
       e.count = parseCount(count, "PLY element '" + printable(e.name) + "' count");
+      if (e.name == "vertex") h.vertices = e.count;
       h.elements.push_back(e);
     } else if (keyword == "property") {
       if (h.elements.empty()) throw std::runtime_error("PLY header: property before any element");
-      PlyProperty p;
-      std::string a, b;
-      if (!(in >> a >> b)) break;
-      if (a == "list") {
-        std::string item;
-        if (!(in >> item >> p.name)) break;
-        p.countSize = typeSize(b);
-        p.size = typeSize(item);
-      } else {
-        // "property <type> <name>", or the reverse, which OpenMesh also accepts.
-        const bool typeFirst = a == "char" || a == "uchar" || a == "short" || a == "ushort" || a == "int" ||
-                               a == "uint" || a == "float" || a == "double" || a.rfind("int", 0) == 0 ||
-                               a.rfind("uint", 0) == 0 || a.rfind("float", 0) == 0;
-        p.size = typeSize(typeFirst ? a : b);
-        p.name = typeFirst ? b : a;
-      }
-      h.elements.back().props.push_back(p);
+      h.elements.back().props.push_back(parseProperty(in, h.elements.back()));
     }  // other words (stray text some exporters write) are skipped, as OpenMesh does
     beforeEnd = in.tellg();
   }
   if (keyword != "end_header" || !in) throw std::runtime_error("PLY header is incomplete (no end_header)");
+  for (const auto& e : h.elements)
+    if (e.count > 0 && e.props.empty())
+      throw std::runtime_error("PLY header: element '" + printable(e.name) + "' has " + std::to_string(e.count) +
+                               " items but no properties");
   if (h.format == PlyFormat::Ascii) {
-    h.bodyOffset = static_cast<std::size_t>(in.tellg());
+    const std::streamoff body = in.tellg();  // -1 when end_header ends the file
+    h.bodyOffset = body < 0 ? data.size() : static_cast<std::size_t>(body);
   } else {
     // OpenMesh skips "\nend_header\n" (or its \r\n form) after the preceding token.
     const auto p = static_cast<std::size_t>(beforeEnd);
@@ -108,68 +148,114 @@ PlyHeader parseHeader(const std::string& data) {
   return h;
 }
 
+std::string item(const PlyElement& e, std::uint64_t i) {
+  return (e.name == "vertex" || e.name == "face" ? e.name : "element '" + printable(e.name) + "' item") + " " +
+         std::to_string(i);
+}
+
 [[noreturn]] void truncated(const PlyElement& e, std::uint64_t i) {
   throw std::runtime_error("file ends inside element '" + printable(e.name) + "' (item " + std::to_string(i) +
                            " of " + std::to_string(e.count) + ")");
 }
 
-bool isCoordinate(const PlyElement& e, const PlyProperty& p) {
-  return e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z");
+// The limits of an integer type, for checking ASCII values and list lengths.
+long long minOf(const PlyType& t) { return t.isSigned ? -(1LL << (8 * t.size - 1)) : 0; }
+long long maxOf(const PlyType& t) { return t.isSigned ? (1LL << (8 * t.size - 1)) - 1 : (1LL << (8 * t.size)) - 1; }
+
+// Checks one value of property `p` of item i (already read as a number) in its role.
+void checkValue(const PlyHeader& h, const PlyProperty& p, double v, const PlyElement& e, std::uint64_t i) {
+  if (p.role == Role::Coordinate && !finiteAsFloat(v))
+    throw std::runtime_error(item(e, i) + " has a NaN or infinite coordinate");
+  if (p.role == Role::FaceIndices && (v < 0 || v >= double(h.vertices))) {
+    char index[32];
+    std::snprintf(index, sizeof index, "%.0f", v);
+    throw std::runtime_error(item(e, i) + " refers to vertex " + index + ", but the file has " +
+                             std::to_string(h.vertices) + " vertices");
+  }
 }
 
-void walkAscii(const PlyHeader& h, const std::string& data) {
-  std::istringstream in(data.substr(h.bodyOffset));
+double asciiValue(const PlyType& t, const std::string& tok, const PlyElement& e, std::uint64_t i) {
+  double real = 0.0;
+  long long v = 0;
+  if (t.real ? parseReal(tok, real) : parseInteger(tok, minOf(t), maxOf(t), v)) return t.real ? real : double(v);
+  throw std::runtime_error(item(e, i) + ": '" + printable(tok) + "' is not " +
+                           (t.real ? std::string("a number")
+                                   : "a whole number in [" + std::to_string(minOf(t)) + ", " +
+                                         std::to_string(maxOf(t)) + "]"));
+}
+
+void walkAscii(const PlyHeader& h, std::string_view data) {
+  ViewStream in(data.substr(h.bodyOffset));
   std::string tok;
   for (const auto& e : h.elements) {
     for (std::uint64_t i = 0; i < e.count; ++i)
       for (const auto& p : e.props) {
         if (!(in >> tok)) truncated(e, i);
         if (p.list()) {
-          const std::uint64_t n = parseCount(tok, "element '" + printable(e.name) + "' item " + std::to_string(i));
-          for (std::uint64_t k = 0; k < n; ++k)
+          const double length = asciiValue(p.countType, tok, e, i);
+          if (length < 0) throw std::runtime_error(item(e, i) + " has a negative list length");
+          const auto n = static_cast<std::uint64_t>(length);
+          if (p.role == Role::FaceIndices && n < 3) throw std::runtime_error(item(e, i) + " has fewer than 3 vertices");
+          for (std::uint64_t k = 0; k < n; ++k) {
             if (!(in >> tok)) truncated(e, i);
-        } else if (isCoordinate(e, p)) {
-          double v = 0.0;
-          if (!parseNumber(tok, v) || !std::isfinite(static_cast<float>(v)))
-            throw std::runtime_error("vertex " + std::to_string(i) + " has a NaN, infinite or unreadable coordinate");
+            checkValue(h, p, asciiValue(p.type, tok, e, i), e, i);
+          }
+        } else {
+          checkValue(h, p, asciiValue(p.type, tok, e, i), e, i);
         }
       }
     if (e.name == "face") return;  // OpenMesh stops reading after the faces
   }
 }
 
-std::uint64_t readUnsigned(const unsigned char* p, int size, bool bigEndian) {
-  std::uint64_t v = 0;
-  for (int b = 0; b < size; ++b) v |= std::uint64_t(p[bigEndian ? size - 1 - b : b]) << (8 * b);
-  return v;
+double binaryValue(const unsigned char* p, const PlyType& t, bool bigEndian) {
+  std::uint64_t bits = 0;
+  for (int b = 0; b < t.size; ++b) bits |= std::uint64_t(p[bigEndian ? t.size - 1 - b : b]) << (8 * b);
+  if (t.real && t.size == 4) {
+    float f;
+    const auto u = static_cast<std::uint32_t>(bits);
+    std::memcpy(&f, &u, 4);
+    return f;
+  }
+  if (t.real) {
+    double d;
+    std::memcpy(&d, &bits, 8);
+    return d;
+  }
+  if (t.isSigned && (bits >> (8 * t.size - 1)) & 1) return double(static_cast<long long>(bits) - (1LL << (8 * t.size)));
+  return double(bits);
 }
 
-void walkBinary(const PlyHeader& h, const std::string& data) {
+void walkBinary(const PlyHeader& h, std::string_view data) {
   const bool big = h.format == PlyFormat::BinaryBE;
   const auto* p = reinterpret_cast<const unsigned char*>(data.data()) + h.bodyOffset;
   const auto* end = reinterpret_cast<const unsigned char*>(data.data()) + data.size();
   for (const auto& e : h.elements) {
-    bool fixed = true;
+    bool plain = true;  // no lists and nothing to look at: skip the whole element at once
     std::uint64_t row = 0;
     for (const auto& q : e.props) {
-      fixed = fixed && !q.list();
-      row += q.size;
+      plain = plain && !q.list() && q.role == Role::Other;
+      row += q.type.size;
     }
-    if (fixed) {  // no lists: skip the whole element at once
-      if (row * e.count > std::uint64_t(end - p)) truncated(e, std::uint64_t(end - p) / (row ? row : 1));
+    if (plain) {
+      if (row * e.count > std::uint64_t(end - p)) truncated(e, std::uint64_t(end - p) / row);
       p += row * e.count;
     } else {
       for (std::uint64_t i = 0; i < e.count; ++i)
         for (const auto& q : e.props) {
-          std::uint64_t bytes = q.size;
+          std::uint64_t n = 1;
           if (q.list()) {
-            if (end - p < q.countSize) truncated(e, i);
-            // A signed length type with the top bit set reads huge here: rejected below as well.
-            bytes = readUnsigned(p, q.countSize, big) * q.size;
-            p += q.countSize;
+            if (end - p < q.countType.size) truncated(e, i);
+            const double length = binaryValue(p, q.countType, big);
+            p += q.countType.size;
+            if (length < 0) throw std::runtime_error(item(e, i) + " has a negative list length");
+            n = static_cast<std::uint64_t>(length);
+            if (q.role == Role::FaceIndices && n < 3) throw std::runtime_error(item(e, i) + " has fewer than 3 vertices");
           }
-          if (bytes > std::uint64_t(end - p)) truncated(e, i);
-          p += bytes;
+          if (n * q.type.size > std::uint64_t(end - p)) truncated(e, i);
+          if (q.role != Role::Other)
+            for (std::uint64_t k = 0; k < n; ++k) checkValue(h, q, binaryValue(p + k * q.type.size, q.type, big), e, i);
+          p += n * q.type.size;
         }
     }
     if (e.name == "face") return;
@@ -178,12 +264,7 @@ void walkBinary(const PlyHeader& h, const std::string& data) {
 
 }  // namespace
 
-void precheckPly(const std::string& path, std::uintmax_t fileSize) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open the file");
-  std::string data;
-  data.reserve(static_cast<std::size_t>(fileSize));
-  data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+void precheckPly(std::string_view data) {
   const PlyHeader h = parseHeader(data);
   bool hasVertices = false;
   for (const auto& e : h.elements) hasVertices = hasVertices || e.name == "vertex";

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/InputFiles.h"
 #include "io/JsonField.h"
 #include "io/MeshIO.h"
 #include "scenes/BuiltinScenes.h"
@@ -20,8 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-constexpr int kMaxSegments = 4096;
 
 std::string oneLine(std::string s) {
   for (char& c : s)
@@ -58,29 +57,30 @@ Falloff parseFalloff(const JsonField& f) {
   f.fail("expected one of binary, wendland, sqrt, exponential");
 }
 
-// Fields present in `f` override `cam`; `complete` requires position and focal point.
+// Fields present in `f` override `cam`; `complete` requires position and focal point. The camera
+// as a whole is checked as the CLI checks it (io/SceneLimits.h).
 void parseCamera(const JsonField& f, Camera& cam, bool complete) {
   f.allowOnly({"position", "focalPoint", "viewUp", "viewAngle"});
   if (complete || f.has("position")) cam.position = f["position"].vec3();
   if (complete || f.has("focalPoint")) cam.focalPoint = f["focalPoint"].vec3();
   if (f.has("viewUp")) cam.viewUp = f["viewUp"].vec3();
-  if (f.has("viewAngle")) {
-    cam.viewAngleDeg = f["viewAngle"].number(1e-3, 179.0);
+  if (f.has("viewAngle")) cam.viewAngleDeg = f["viewAngle"].number(limits::kViewAngle);
+  if (const auto problem = cameraProblem(cam)) {
+    static const char* const keys[] = {"position", "focalPoint", "viewUp", "viewAngle"};
+    f.fail(std::string(keys[problem->field]) + " " + problem->what);
   }
-  const glm::dvec3 dir = cam.focalPoint - cam.position;
-  if (glm::length(dir) == 0.0) f.fail("position and focalPoint coincide");
-  if (glm::length(glm::cross(glm::normalize(dir), cam.viewUp)) < 1e-9) f.fail("viewUp is parallel to the view direction");
 }
 
 // A positive number or `n` positive numbers.
 std::vector<double> sizes(const JsonField& f, std::size_t n) {
   if (f.json().is_number()) return std::vector<double>(n, f.positive());
-  return f.numbers(n, 1e-300, 1e300, "a positive number or " + std::to_string(n) + " positive numbers");
+  return f.numbers(n, 1e-300, limits::kLength.max,
+                   "a positive number or " + std::to_string(n) + " positive numbers (at most 1e+15)");
 }
 
 glm::vec3 parseAlbedo(const JsonField& f) {
-  if (f.json().is_number()) return glm::vec3(static_cast<float>(f.number(0.0, 1.0)));
-  const auto v = f.numbers(3, 0.0, 1.0, "a number or 3 numbers in [0, 1]");
+  if (f.json().is_number()) return glm::vec3(static_cast<float>(f.number(limits::kAlbedo)));
+  const auto v = f.numbers(3, limits::kAlbedo.min, limits::kAlbedo.max, "a number or 3 numbers in [0, 1]");
   return glm::vec3(v[0], v[1], v[2]);
 }
 
@@ -104,11 +104,14 @@ glm::dmat4 parsePlacement(const JsonField& o) {
 std::shared_ptr<const TriangleMesh> parseShape(const JsonField& o) {
   const JsonField shape = o["shape"];
   const std::string kind = shape.string();
-  auto optionalInt = [&](const char* key, int def, int min) { return o.has(key) ? o[key].integer(min, kMaxSegments) : def; };
+  auto optionalInt = [&](const char* key, int def, const NumberRange& r) {
+    return o.has(key) ? o[key].integer(int(r.min), int(r.max)) : def;
+  };
   auto optionalPositive = [&](const char* key, double def) { return o.has(key) ? o[key].positive() : def; };
   if (kind == "sphere") {
     o.allowOnly({"name", "shape", "radius", "slices", "stacks", "translate", "rotate", "scale", "albedo"});
-    return makeUVSphere(optionalPositive("radius", 1.0), optionalInt("slices", 64, 3), optionalInt("stacks", 32, 2));
+    return makeUVSphere(optionalPositive("radius", 1.0), optionalInt("slices", 64, limits::kSegments),
+                        optionalInt("stacks", 32, limits::kStacks));
   }
   if (kind == "box") {
     o.allowOnly({"name", "shape", "size", "translate", "rotate", "scale", "albedo"});
@@ -117,7 +120,7 @@ std::shared_ptr<const TriangleMesh> parseShape(const JsonField& o) {
   }
   if (kind == "cylinder") {
     o.allowOnly({"name", "shape", "radius", "height", "segments", "translate", "rotate", "scale", "albedo"});
-    return makeCylinder(optionalPositive("radius", 0.5), optionalPositive("height", 1.0), optionalInt("segments", 48, 3));
+    return makeCylinder(optionalPositive("radius", 0.5), optionalPositive("height", 1.0), optionalInt("segments", 48, limits::kSegments));
   }
   if (kind == "plane") {
     o.allowOnly({"name", "shape", "size", "cells", "translate", "rotate", "scale", "albedo"});
@@ -127,10 +130,10 @@ std::shared_ptr<const TriangleMesh> parseShape(const JsonField& o) {
       const JsonField c = o["cells"];
       if (c.json().is_array()) {
         if (c.size() != 2) c.fail("expected an integer or 2 integers");
-        nx = c[std::size_t(0)].integer(1, kMaxSegments);
-        ny = c[std::size_t(1)].integer(1, kMaxSegments);
+        nx = c[std::size_t(0)].integer(int(limits::kCells.min), int(limits::kCells.max));
+        ny = c[std::size_t(1)].integer(int(limits::kCells.min), int(limits::kCells.max));
       } else {
-        nx = ny = c.integer(1, kMaxSegments);
+        nx = ny = c.integer(int(limits::kCells.min), int(limits::kCells.max));
       }
     }
     return makeGridPlane(s[0], s[1], nx, ny);
@@ -189,8 +192,8 @@ Scene parseScene(const JsonField& top, const fs::path& file) {
     if (top.has("options")) {
       const JsonField o = top["options"];
       o.allowOnly({"cubeCount", "seed"});
-      if (o.has("cubeCount")) opts.cubeCount = o["cubeCount"].integer(1, 100);
-      if (o.has("seed")) opts.seed = static_cast<std::uint32_t>(o["seed"].integer(0, 2147483647));
+      if (o.has("cubeCount")) opts.cubeCount = static_cast<int>(o["cubeCount"].whole(limits::kCubeCount));
+      if (o.has("seed")) opts.seed = static_cast<std::uint32_t>(o["seed"].whole(limits::kSeed32));
     }
     try {
       scene = makeBuiltinScene(top["builtin"].string(), opts);
@@ -200,12 +203,12 @@ Scene parseScene(const JsonField& top, const fs::path& file) {
   } else {
     if (top.has("options")) top["options"].fail("only allowed with 'builtin'");
     scene.name = file.stem().string();
-    scene.root->setAORadius(top["aoRadius"].positive());
+    scene.root->setAORadius(top["aoRadius"].number(limits::kAORadius));
     parseCamera(top["camera"], scene.camera, true);
     if (top["objects"].size() == 0) top["objects"].fail("expected at least one object");
   }
   if (top.has("name")) scene.name = top["name"].string();
-  if (builtin && top.has("aoRadius")) scene.root->setAORadius(top["aoRadius"].positive());
+  if (builtin && top.has("aoRadius")) scene.root->setAORadius(top["aoRadius"].number(limits::kAORadius));
   if (builtin && top.has("camera")) parseCamera(top["camera"], scene.camera, false);
   if (top.has("falloff")) scene.root->setFalloff(parseFalloff(top["falloff"]));
   if (top.has("objects")) {
@@ -222,6 +225,9 @@ Scene loadSceneFile(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw std::runtime_error(path + ": no such file");
   if (!fs::is_regular_file(path, ec)) throw std::runtime_error(path + ": not a regular file");
+  noteInputFile(path);
+  if (const auto size = fs::file_size(path, ec); !ec && size > (std::uintmax_t(64) << 20))
+    throw std::runtime_error(path + ": larger than 64 MiB, too large for a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open the file");
   std::ostringstream text;

@@ -1,4 +1,4 @@
-// Reading through VTK: the XML and legacy dataset formats, and the fallback for OBJ and STL.
+// Reading through VTK: the XML and legacy dataset formats, and the fallback for OBJ.
 // Any dataset is reduced to its outer surface (vtkGeometryFilter) and triangulated
 // (vtkTriangleFilter); points and lines are dropped.
 #include <mutex>
@@ -16,42 +16,21 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include "io/MeshReaders.h"
+#include "output/VtkErrorWindow.h"
 
 namespace aokit {
 namespace {
 
-// Collects VTK's error and warning text instead of printing it. VTK routes every vtkErrorMacro
+// Installs a VtkErrorWindow (output/VtkErrorWindow.h) for one scope and mutes vtkLogger, which
+// prints every error to stderr before the output window sees it. VTK routes every vtkErrorMacro
 // without an observer to the one global output window; XML readers report through internal parser
-// objects we cannot attach observers to, so swapping the window is the one place to catch it all.
-class CapturingOutputWindow : public vtkOutputWindow {
- public:
-  static CapturingOutputWindow* New();
-  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
-
-  void DisplayText(const char*) override {}
-  void DisplayErrorText(const char* text) override { keep(text); }
-  void DisplayWarningText(const char*) override {}
-  void DisplayGenericWarningText(const char*) override {}
-  void DisplayDebugText(const char*) override {}
-  const std::string& firstError() const { return first_; }
-
- private:
-  void keep(const char* text) {
-    if (first_.empty() && text) first_ = text;
-  }
-  std::string first_;
-};
-vtkStandardNewMacro(CapturingOutputWindow);
-
-// Installs a CapturingOutputWindow for one scope and mutes vtkLogger, which prints every error to
-// stderr before the output window sees it. vtkLogger has no getter for its stderr level; the
+// objects we cannot attach observers to, so swapping the window is the one place to catch it all. vtkLogger has no getter for its stderr level; the
 // overall cutoff equals it unless log files or callbacks were added. Global state: callers hold
 // vtkReadMutex.
 class ScopedVtkCapture {
@@ -66,26 +45,15 @@ class ScopedVtkCapture {
   }
   ScopedVtkCapture(const ScopedVtkCapture&) = delete;
   ScopedVtkCapture& operator=(const ScopedVtkCapture&) = delete;
-  const std::string& firstError() const { return window_->firstError(); }
+  std::string takeError() { return window_->takeError(); }
 
  private:
   vtkSmartPointer<vtkOutputWindow> previous_;
   vtkLogger::Verbosity logLevel_;
-  vtkNew<CapturingOutputWindow> window_;
+  vtkNew<VtkErrorWindow> window_;
 };
 
 std::mutex vtkReadMutex;
-
-// VTK messages read "ERROR: In <file>, line N\n<class> (0x...): <text>\n\n": keep <text>, at most
-// 200 bytes, printable ASCII only (readers quote the garbage they choked on).
-std::string vtkMessageText(std::string msg) {
-  if (const auto colon = msg.find("): "); colon != std::string::npos) msg = msg.substr(colon + 3);
-  while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
-  if (msg.size() > 200) msg = msg.substr(0, 200) + "...";
-  for (char& c : msg)
-    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
-  return msg;
-}
 
 vtkSmartPointer<vtkAlgorithm> makeReader(VtkFormat format, const std::string& path) {
   switch (format) {
@@ -106,11 +74,6 @@ vtkSmartPointer<vtkAlgorithm> makeReader(VtkFormat format, const std::string& pa
     }
     case VtkFormat::Obj: {
       auto r = vtkSmartPointer<vtkOBJReader>::New();
-      r->SetFileName(path.c_str());
-      return r;
-    }
-    case VtkFormat::Stl: {
-      auto r = vtkSmartPointer<vtkSTLReader>::New();
       r->SetFileName(path.c_str());
       return r;
     }
@@ -162,8 +125,8 @@ bool readWithVtk(const std::string& path, VtkFormat format, TriangleMesh& out, s
     why = "out of memory while reading";
     return false;
   }
-  if (!capture.firstError().empty()) {
-    why = vtkMessageText(capture.firstError());
+  if (std::string error = capture.takeError(); !error.empty()) {
+    why = std::move(error);
     return false;
   }
   TriangleMesh mesh;

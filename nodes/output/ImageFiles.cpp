@@ -12,6 +12,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "output/AtomicFile.h"
+#include "output/VtkErrorWindow.h"
 
 namespace aokit {
 
@@ -29,7 +30,10 @@ void writePNG(const std::string& path, int width, int height, const std::vector<
     writer->SetFileName(tmp.c_str());
     writer->SetInputData(image);
     writer->Write();
-    if (writer->GetErrorCode() != 0) throw std::runtime_error(path + ": cannot write PNG");
+    if (writer->GetErrorCode() != 0) {
+      const std::string why = takeVtkError();
+      throw std::runtime_error(path + ": cannot write PNG" + (why.empty() ? "" : " (" + why + ")"));
+    }
   });
 }
 
@@ -50,11 +54,9 @@ void writeAOPNG(const std::string& path, int width, int height, const std::vecto
 }
 
 void writeFloatImage(const std::string& path, int width, int height, const std::vector<float>& values) {
-  writeAtomically(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
+  writeStreamAtomically(path, [&](std::ostream& out) {
     out << "AOKITF32 " << width << " " << height << "\n";
     out.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(values.size() * sizeof(float)));
-    if (!out) throw std::runtime_error(path + ": cannot write");
   });
 }
 

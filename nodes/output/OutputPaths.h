@@ -1,0 +1,16 @@
+#pragma once
+// Checks a command makes on its output paths before any work, so that a run refused for its
+// outputs is refused at once, before minutes of rendering and before any other output exists.
+#include <string>
+#include <vector>
+
+namespace aokit {
+
+// For each non-empty path: refuses what writeAtomically would refuse (a directory, a block
+// device, a missing folder, ...) and a path that names a file this process has read as input
+// (io/InputFiles.h: every mesh and scene file loaded so far), however spelled (symbolic links,
+// hard links, "../"): "<output>: is the input file <input>; refusing to write over it". Call it
+// after loading the scene; writeAtomically checks again at write time.
+void checkOutputPaths(const std::vector<std::string>& outputs);
+
+}  // namespace aokit
