@@ -204,6 +204,8 @@ void FieldPass::Upload(vtkOpenGLRenderWindow* renWin) {
     const CapIntegralTable& cap = capIntegralTable();
     CapTable = makeTexture2D(renWin, TexFormat::R32F, CapIntegralTable::kWidth, CapIntegralTable::kHeight,
                              cap.texels.data(), TexFilter::Linear);
+  }
+  if (Mode() == 1 && !ClipTable) {  // the cone tables only where cones are merged
     const aokit::ClipTable& clip = clipTable();
     ClipTable = makeTexture2D(renWin, TexFormat::RG32F, aokit::ClipTable::kSize, aokit::ClipTable::kSize,
                               clip.texels.data(), TexFilter::Linear);
@@ -385,10 +387,9 @@ bool FieldPass::RenderOccluders(DeferredFrame& f) {
       // The quad lies at the far side of the sphere (a little beyond, against rounding).
       const double far = windowDepth(f.depthToZ, centre.z - o[15] * 1.001 - 1e-6 * std::abs(centre.z));
       glDepthRange(far, far);
-      if (owner >= 1 && owner <= 254)
-        state->vtkglStencilFunc(GL_NOTEQUAL, static_cast<int>(owner), 0xFF);
-      else
-        state->vtkglStencilFunc(GL_ALWAYS, 0, 0xFF);
+      // Receivers hold min(id, 255) >= 1: an owner the stencil cannot name compares against 0, which
+      // passes them all (one test function for every draw: one llvmpipe shader variant).
+      state->vtkglStencilFunc(GL_NOTEQUAL, owner >= 1 && owner <= 254 ? static_cast<int>(owner) : 0, 0xFF);
       state->vtkglScissor(rect.x0, rect.y0, rect.x1 - rect.x0 + 1, rect.y1 - rect.y0 + 1);
       stage.render();
       if (mode == 1) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the next draw reads this one's cones
