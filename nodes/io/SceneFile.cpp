@@ -9,6 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fields/ContentHash.h"
+#include "fields/FieldAttachment.h"
+#include "fields/FieldFile.h"
 #include "io/InputFiles.h"
 #include "io/JsonField.h"
 #include "io/MeshIO.h"
@@ -109,21 +112,21 @@ std::shared_ptr<const TriangleMesh> parseShape(const JsonField& o) {
   };
   auto optionalPositive = [&](const char* key, double def) { return o.has(key) ? o[key].positive() : def; };
   if (kind == "sphere") {
-    o.allowOnly({"name", "shape", "radius", "slices", "stacks", "translate", "rotate", "scale", "albedo"});
+    o.allowOnly({"name", "shape", "radius", "slices", "stacks", "translate", "rotate", "scale", "albedo", "field"});
     return makeUVSphere(optionalPositive("radius", 1.0), optionalInt("slices", 64, limits::kSegments),
                         optionalInt("stacks", 32, limits::kStacks));
   }
   if (kind == "box") {
-    o.allowOnly({"name", "shape", "size", "translate", "rotate", "scale", "albedo"});
+    o.allowOnly({"name", "shape", "size", "translate", "rotate", "scale", "albedo", "field"});
     const auto s = o.has("size") ? sizes(o["size"], 3) : std::vector<double>(3, 1.0);
     return makeBox({s[0], s[1], s[2]});
   }
   if (kind == "cylinder") {
-    o.allowOnly({"name", "shape", "radius", "height", "segments", "translate", "rotate", "scale", "albedo"});
+    o.allowOnly({"name", "shape", "radius", "height", "segments", "translate", "rotate", "scale", "albedo", "field"});
     return makeCylinder(optionalPositive("radius", 0.5), optionalPositive("height", 1.0), optionalInt("segments", 48, limits::kSegments));
   }
   if (kind == "plane") {
-    o.allowOnly({"name", "shape", "size", "cells", "translate", "rotate", "scale", "albedo"});
+    o.allowOnly({"name", "shape", "size", "cells", "translate", "rotate", "scale", "albedo", "field"});
     const auto s = o.has("size") ? sizes(o["size"], 2) : std::vector<double>(2, 10.0);
     int nx = 1, ny = 1;
     if (o.has("cells")) {
@@ -151,13 +154,15 @@ class ObjectReader {
     if (hasMesh == hasShape) o.fail(hasMesh ? "has both 'mesh' and 'shape'" : "needs a 'mesh' or a 'shape'");
     std::shared_ptr<const TriangleMesh> mesh;
     if (hasMesh) {
-      o.allowOnly({"name", "mesh", "translate", "rotate", "scale", "albedo"});
+      o.allowOnly({"name", "mesh", "translate", "rotate", "scale", "albedo", "field"});
       mesh = loadCached(o["mesh"]);
     } else {
       mesh = parseShape(o);
     }
     const glm::vec3 albedo = o.has("albedo") ? parseAlbedo(o["albedo"]) : glm::vec3(0.8f);
-    addPlaced(parent, mesh, parsePlacement(o), albedo, o.has("name") ? o["name"].string() : std::string());
+    const TransformPtr placed =
+        addPlaced(parent, mesh, parsePlacement(o), albedo, o.has("name") ? o["name"].string() : std::string());
+    if (o.has("field")) attachField(o["field"], *mesh, *placed->child(0));
   }
 
  private:
@@ -176,6 +181,23 @@ class ObjectReader {
       }
     }
     return slot;
+  }
+
+  // "field": a baked field file for this object (fields/FieldAttachment.h); its header and mesh
+  // are checked now, its R and falloff when the field method prepares.
+  void attachField(const JsonField& f, const TriangleMesh& mesh, const Node& geometry) {
+    fs::path p = f.string();
+    if (p.empty()) f.fail("expected a field file name");
+    if (p.is_relative()) p = baseDir_ / p;
+    const std::string path = p.lexically_normal().string();
+    std::uint64_t baked = 0;
+    try {
+      baked = readFieldFileInfo(path).meshHash;
+    } catch (const std::runtime_error& e) {
+      f.fail(e.what());
+    }
+    if (baked != meshContentHash(mesh)) f.fail(path + ": field was baked for another mesh");
+    setFieldFile(geometry, path);
   }
 
   fs::path baseDir_;

@@ -15,6 +15,8 @@
 //     { "shape": "cylinder", "radius": r, "height": h, "segments": n },   along +z from z = 0
 //     { "shape": "plane", "size": s or [sx,sy], "cells": n or [nx,ny] },  z = 0, normal +z
 //     { "mesh": "relative/to/this/file.off" }                   any loadMesh format
+//   any object may add "field": "relative/to/this/file.aof", a field baked by `aokit bake` for its
+//   mesh (fields/FieldFile.h), used by the field method instead of baking
 //   ]
 // }
 // or { "builtin": "sphere-plane", "options": {"cubeCount": 20, "seed": 1} } to start from a
