@@ -25,8 +25,8 @@ struct BenchArgs {
   bool temporal = true;
 };
 
-const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes", "tank", "corridor",
-                                                 "room",         "open-box",         "bunny", "fandisk"};
+const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes", "tank",    "stack",
+                                                 "corridor",     "room",             "open-box", "bunny", "fandisk"};
 
 void runBenchCommand(const BenchArgs& a) {
   // Everything is checked before the output folder exists: a refused run leaves nothing behind.
@@ -81,8 +81,8 @@ void addBenchCommand(CLI::App& app) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "time and error of every method against the reference");
   cmd->add_option("--scenes", args->scenes,
-                  "scenes, separated by ',' or ';' (default: sphere-plane, sphere-offscreen, cubes, tank, corridor, "
-                  "room, open-box, bunny, fandisk)");
+                  "scenes, separated by ',' or ';' (default: sphere-plane, sphere-offscreen, cubes, tank, stack, "
+                  "corridor, room, open-box, bunny, fandisk)");
   cmd->add_option("--methods", args->methodsArg,
                   "methods, separated by ',' or ';': a method (all its bench settings) or method:key=value,key=value "
                   "(default: all)");
