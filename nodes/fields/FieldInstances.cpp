@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -23,7 +25,11 @@ bool isSimilarity(const glm::dmat4& m, double* scale) {
   if (worst > 1e-6 * s2) return false;
   // Rounded to 9 digits, so that rotations (whose s differs from 1 in the last bits) share fields
   // and cache entries.
-  if (scale) *scale = std::exp(std::round(0.5 * std::log(s2) * 1e9) / 1e9);
+  if (scale) {
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%.9g", std::sqrt(s2));
+    *scale = std::strtod(digits, nullptr);
+  }
   return true;
 }
 
