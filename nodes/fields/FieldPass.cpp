@@ -184,7 +184,15 @@ const char* FieldPass::ReadyFamily(const DeferredFrame& f) {
   return nullptr;
 }
 
-void FieldPass::Upload(vtkOpenGLRenderWindow* renWin) {
+bool FieldPass::Upload(vtkOpenGLRenderWindow* renWin) {
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  const std::size_t largest = std::max(FieldData.texels4.size() / 4, FieldData.texels3.size() / 3);
+  if (largest > static_cast<std::size_t>(maxTexels)) {
+    vtkErrorMacro("the fields need buffer textures of " << largest << " texels, this GL allows " << maxTexels
+                                                       << "; showing the frame without AO");
+    return false;
+  }
   if (FieldsDirty) {
     Texels4 = makeBufferTexture(renWin, TexFormat::RGBA32F, FieldData.texels4.size() / 4, FieldData.texels4.data());
     Texels3 = makeBufferTexture(renWin, TexFormat::RGB32F, FieldData.texels3.size() / 3, FieldData.texels3.data());
@@ -213,6 +221,7 @@ void FieldPass::Upload(vtkOpenGLRenderWindow* renWin) {
     constexpr int m = aokit::MergeTable::kSize;
     MergeTable = makeTexture3D(renWin, TexFormat::R32F, m, m, m, merge.texels.data(), TexFilter::Linear);
   }
+  return true;
 }
 
 void FieldPass::BindFieldData(vtkShaderProgram* p) const {
@@ -223,7 +232,7 @@ void FieldPass::BindFieldData(vtkShaderProgram* p) const {
   setSampler(p, "occluderFloats", OccluderFloats);
   setSampler(p, "occluderInts", OccluderInts);
   setSampler(p, "fieldCapLUT", CapTable);
-  if (Settings.combine == FieldCombine::Cone) {
+  if (Mode() == 1) {
     setSampler(p, "fieldClipLUT", ClipTable);
     setSampler(p, "fieldMergeLUT", MergeTable);
   }
@@ -233,8 +242,7 @@ void FieldPass::BindFieldData(vtkShaderProgram* p) const {
 }
 
 vtkTextureObject* FieldPass::RenderAO(DeferredFrame& f) {
-  Upload(f.renWin);
-  if (!RenderOccluders(f)) return nullptr;
+  if (!Upload(f.renWin) || !RenderOccluders(f)) return nullptr;
   f.mark("fields");
   LastFrame = f;
   return f.aoTarget;
@@ -435,8 +443,8 @@ void FieldPass::RenderSlice(const vtkRenderState* s) {
   GBufferPass* g = LastFrame.gbuffer;
   Bound inputs{g->GetDepthTexture(), g->GetNormalTexture(), g->GetColorTexture(), g->GetFlagsTexture(), Texels4,
                Texels3, FieldInts, FieldFloats, OccluderFloats, OccluderInts, CapTable,
-               Settings.combine == FieldCombine::Cone ? ClipTable.Get() : nullptr,
-               Settings.combine == FieldCombine::Cone ? MergeTable.Get() : nullptr};
+               Mode() == 1 ? ClipTable.Get() : nullptr,
+               Mode() == 1 ? MergeTable.Get() : nullptr};
   LastFrame.bindCommon(p);
   BindFieldData(p);
   p->SetUniformi("fieldOccluders", OccluderData.occluderCount);

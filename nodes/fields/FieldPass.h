@@ -79,7 +79,7 @@ class FieldPass : public DeferredAOPass {
  private:
   int Mode() const;  // FIELD_MODE: 0 multiply, 1 cones, 2 count
   std::string Defines(int cubes, int grid) const;
-  void Upload(vtkOpenGLRenderWindow* renWin);
+  bool Upload(vtkOpenGLRenderWindow* renWin);  // false: too large for this GL (reported)
   void BindFieldData(vtkShaderProgram* p) const;
   bool RenderOccluders(DeferredFrame& f);
   void RenderSlice(const vtkRenderState* s);
