@@ -245,3 +245,63 @@ TEST(FieldSettings, BadPassAndTechniqueSettingsGiveOneLineErrors) {
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
   }
 }
+
+TEST(FieldScreenRect, TileRunsHoldEveryReceiverTheSphereReaches) {
+  // A floor seen from above at an angle (view depth varying over the image), tiles of 8 texels
+  // with their receivers' depth ranges; spheres around and above it. Every texel whose receiver
+  // lies in the sphere is in a run; the runs stay inside the sphere's rectangle and cut it down.
+  TargetGeometry t;
+  const double f = 1.0 / std::tan(glm::radians(15.0)), aspect = 4.0 / 3.0;
+  const float clip[3][4] = {{static_cast<float>(f / aspect), 0, 0, 0}, {0, static_cast<float>(f), 0, 0}, {0, 0, -1, 0}};
+  std::copy(&clip[0][0], &clip[0][0] + 12, &t.clip[0][0]);
+  t.gbufferWidth = t.screenWidth = t.targetWidth = 160;
+  t.gbufferHeight = t.screenHeight = t.targetHeight = 120;
+  // The floor: view z of texel (x, y) from a plane z = -8 + 3 (y / 120 - 0.5) (tilted), none in
+  // the top rows (background).
+  auto depthOf = [&](int x, int y) { return y > 100 ? 1.0 : -8.0 + 3.0 * (y / 120.0 - 0.5) + 0.5 * (x / 160.0); };
+  TileDepths tiles;
+  tiles.tile = 8;
+  tiles.tilesX = 20;
+  tiles.tilesY = 15;
+  tiles.zRange.assign(2 * 20 * 15, 0.0f);
+  for (int ty = 0; ty < 15; ++ty)
+    for (int tx = 0; tx < 20; ++tx) {
+      float zn = -1e30f, zf = 1e30f;
+      for (int y = ty * 8; y < ty * 8 + 8; ++y)
+        for (int x = tx * 8; x < tx * 8 + 8; ++x) {
+          const double z = depthOf(x, y);
+          if (z > 0.0) continue;
+          zn = std::max(zn, static_cast<float>(z));
+          zf = std::min(zf, static_cast<float>(z));
+        }
+      tiles.zRange[2 * (ty * 20 + tx)] = zn;
+      tiles.zRange[2 * (ty * 20 + tx) + 1] = zf;
+    }
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-1, 1);
+  long long runArea = 0, rectArea = 0;
+  for (int s = 0; s < 200; ++s) {
+    const glm::dvec3 c(2.5 * u(rng), 2.0 * u(rng), -7.0 + 2.5 * u(rng));
+    const double r = 0.3 + 0.6 * (u(rng) + 1.0);
+    const TexelRect rect = sphereTexelRect(c, r, t);
+    const auto runs = sphereTexelRuns(c, r, t, tiles);
+    for (const auto& run : runs) {
+      EXPECT_TRUE(run.x0 >= rect.x0 && run.x1 <= rect.x1 && run.y0 >= rect.y0 && run.y1 <= rect.y1);
+      runArea += run.area();
+    }
+    rectArea += rect.area();
+    for (int y = 0; y < 120; ++y)
+      for (int x = 0; x < 160; ++x) {
+        const double z = depthOf(x, y);
+        if (z > 0.0) continue;
+        const double nx = (x + 0.5) / 160 * 2 - 1, ny = (y + 0.5) / 120 * 2 - 1;
+        const glm::dvec3 p(nx * -z / clip[0][0], ny * -z / clip[1][1], z);
+        if (glm::distance(p, c) > r) continue;
+        bool in = false;
+        for (const auto& run : runs) in = in || (x >= run.x0 && x <= run.x1 && y >= run.y0 && y <= run.y1);
+        ASSERT_TRUE(in) << "sphere " << s << " texel " << x << "," << y;
+      }
+  }
+  std::printf("runs cover %.2f of the rectangles\n", double(runArea) / rectArea);
+  EXPECT_LT(runArea, rectArea * 0.8);
+}

@@ -13,6 +13,7 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include "FieldPassBoundsFS.h"
 #include "FieldPassEval.h"
 #include "FieldPassOccluderFS.h"
 #include "FieldPassResolveFS.h"
@@ -58,6 +59,8 @@ std::string withEval(const char* stage, const std::string& eval) {
 
 int downsampleOf(double scale) { return scale >= 1.0 ? 1 : scale >= 0.5 ? 2 : 4; }
 
+constexpr int kCullTile = 16;  // culling tile side, AO-target texels
+
 void setSampler(vtkShaderProgram* p, const char* name, vtkTextureObject* t) {
   p->SetUniformi(name, t->GetTextureUnit());
 }
@@ -68,6 +71,7 @@ FieldPass::FieldPass()
     : EvalSource(FieldPassEval),
       OccluderSource(withEval(FieldPassOccluderFS, EvalSource)),
       SliceSource(withEval(FieldPassSliceFS, EvalSource)),
+      BoundsStage(std::make_unique<FullScreenStage>("cull", FieldPassBoundsFS)),
       StartStage(std::make_unique<FullScreenStage>("fields (start)", FieldPassStartFS)),
       CubeStage(std::make_unique<FullScreenStage>("fields (cube occluders)", OccluderSource.c_str())),
       GridStage(std::make_unique<FullScreenStage>("fields (grid occluders)", OccluderSource.c_str())),
@@ -166,7 +170,8 @@ std::string FieldPass::Defines(int cubes, int grid) const {
          "\n#define FIELD_LUT_H " + std::to_string(CapIntegralTable::kHeight) +
          "\n#define FIELD_CLIP_N " + std::to_string(ClipTable::kSize) +
          "\n#define FIELD_MERGE_N " + std::to_string(MergeTable::kSize) +
-         "\n#define FIELD_DOWNSAMPLE " + std::to_string(downsampleOf(Settings.resolutionScale)) + "\n";
+         "\n#define FIELD_DOWNSAMPLE " + std::to_string(downsampleOf(Settings.resolutionScale)) +
+         "\n#define FIELD_TILE " + std::to_string(kCullTile) + "\n";
 }
 
 namespace {
@@ -175,6 +180,7 @@ int gridCode(const FieldGpuData& d) { return !d.hasGrid ? 0 : d.gridKind == Fiel
 
 const char* FieldPass::ReadyFamily(const DeferredFrame& f) {
   const int grid = gridCode(FieldData);
+  if (!BoundsStage->ready(f.renWin, Defines(0, 0))) return "cull";
   if (!StartStage->ready(f.renWin, Defines(0, 0))) return "fields (start)";
   if (FieldData.hasCube && !CubeStage->ready(f.renWin, Defines(1, 0))) return "fields (cube occluders)";
   if (grid && !GridStage->ready(f.renWin, Defines(0, grid))) return "fields (grid occluders)";
@@ -241,6 +247,34 @@ void FieldPass::BindFieldData(vtkShaderProgram* p) const {
   p->SetUniformf("fieldBias", static_cast<float>(Settings.bias));
 }
 
+bool FieldPass::ReadTileDepths(DeferredFrame& f, TileDepths& tiles) {
+  tiles.tile = kCullTile;
+  tiles.tilesX = (f.targetWidth + kCullTile - 1) / kCullTile;
+  tiles.tilesY = (f.targetHeight + kCullTile - 1) / kCullTile;
+  if (!BoundsTarget) BoundsTarget = makeTexture2D(f.renWin, TexFormat::RG32F, tiles.tilesX, tiles.tilesY);
+  else if (static_cast<int>(BoundsTarget->GetWidth()) != tiles.tilesX ||
+           static_cast<int>(BoundsTarget->GetHeight()) != tiles.tilesY)
+    BoundsTarget->Resize(tiles.tilesX, tiles.tilesY);
+  vtkShaderProgram* p = BoundsStage->ready(f.renWin, Defines(0, 0));
+  if (!p) return false;
+  f.bindCommon(p);
+  const int target[2] = {f.targetWidth, f.targetHeight}, count[2] = {tiles.tilesX, tiles.tilesY};
+  p->SetUniform2i("fieldTarget", target);
+  p->SetUniform2i("fieldTiles", count);
+  BoundsStage->renderInto(f.fbo, {BoundsTarget});
+  // A small read (8 bytes a tile); it waits for the G-buffer, which every later draw reads anyway.
+  tiles.zRange.resize(2 * static_cast<std::size_t>(tiles.tilesX) * tiles.tilesY);
+  f.state->PushReadFramebufferBinding();
+  f.fbo->Bind(GL_READ_FRAMEBUFFER);
+  f.fbo->AddColorAttachment(0, BoundsTarget);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, tiles.tilesX, tiles.tilesY, GL_RG, GL_FLOAT, tiles.zRange.data());
+  f.fbo->RemoveColorAttachment(0);
+  f.state->PopReadFramebufferBinding();
+  return true;
+}
+
 vtkTextureObject* FieldPass::RenderAO(DeferredFrame& f) {
   if (!Upload(f.renWin) || !RenderOccluders(f)) return nullptr;
   f.mark("fields");
@@ -265,6 +299,9 @@ void resize(vtkSmartPointer<vtkTextureObject>& t, vtkOpenGLRenderWindow* renWin,
 }  // namespace
 
 bool FieldPass::RenderOccluders(DeferredFrame& f) {
+  TileDepths tiles;
+  if (!ReadTileDepths(f, tiles)) return false;
+  f.mark("cull");
   vtkOpenGLState* state = f.state;
   const int mode = Mode();
   const int target[2] = {f.targetWidth, f.targetHeight};
@@ -358,6 +395,7 @@ bool FieldPass::RenderOccluders(DeferredFrame& f) {
   if (mode == 2) state->vtkglBlendFunc(GL_ONE, GL_ONE);                  // count
   if (mode != 1) state->vtkglEnable(GL_BLEND);
   DrawnOccluders = 0;
+  DrawCalls = 0;
   DrawnTexels = 0;
   const int grid = gridCode(FieldData);
   for (int kindPass = 0; kindPass < 2; ++kindPass) {
@@ -377,8 +415,8 @@ bool FieldPass::RenderOccluders(DeferredFrame& f) {
     for (int k = first; k < end; ++k) {
       const float* o = &OccluderData.floats[static_cast<std::size_t>(k) * 16];
       const glm::dvec3 centre = glm::dvec3(worldToView * glm::dvec4(o[12], o[13], o[14], 1.0));
-      const TexelRect rect = sphereTexelRect(centre, o[15], geometry);
-      if (rect.empty()) continue;
+      const std::vector<TexelRect> runs = sphereTexelRuns(centre, o[15], geometry, tiles);
+      if (runs.empty()) continue;
       const std::uint32_t owner = OccluderData.ints[static_cast<std::size_t>(k) * 4];
       const std::uint32_t field = OccluderData.ints[static_cast<std::size_t>(k) * 4 + 1];
       const int info[4] = {static_cast<int>(FieldData.fieldInts[field * 4]), static_cast<int>(FieldData.fieldInts[field * 4 + 1]),
@@ -398,11 +436,14 @@ bool FieldPass::RenderOccluders(DeferredFrame& f) {
       // Receivers hold min(id, 255) >= 1: an owner the stencil cannot name compares against 0, which
       // passes them all (one test function for every draw: one llvmpipe shader variant).
       state->vtkglStencilFunc(GL_NOTEQUAL, owner >= 1 && owner <= 254 ? static_cast<int>(owner) : 0, 0xFF);
-      state->vtkglScissor(rect.x0, rect.y0, rect.x1 - rect.x0 + 1, rect.y1 - rect.y0 + 1);
-      stage.render();
-      if (mode == 1) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the next draw reads this one's cones
+      for (const TexelRect& rect : runs) {
+        state->vtkglScissor(rect.x0, rect.y0, rect.x1 - rect.x0 + 1, rect.y1 - rect.y0 + 1);
+        stage.render();
+        DrawnTexels += rect.area();
+        ++DrawCalls;
+      }
+      if (mode == 1) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the next occluder reads these cones
       ++DrawnOccluders;
-      DrawnTexels += rect.area();
     }
   }
   finish(true);
@@ -456,10 +497,11 @@ void FieldPass::RenderSlice(const vtkRenderState* s) {
 
 std::size_t FieldPass::FamilyMemoryBytes() const {
   return UploadedBytes + textureBytes(CapTable) + textureBytes(ClipTable) + textureBytes(MergeTable) +
-         textureBytes(StateTarget) + textureBytes(DepthStencil);
+         textureBytes(StateTarget) + textureBytes(DepthStencil) + textureBytes(BoundsTarget);
 }
 
 void FieldPass::ReleaseFamily(vtkWindow* w) {
+  BoundsStage->release(w);
   StartStage->release(w);
   CubeStage->release(w);
   GridStage->release(w);
@@ -467,7 +509,7 @@ void FieldPass::ReleaseFamily(vtkWindow* w) {
   SliceStage->release(w);
   Texels4 = Texels3 = FieldInts = FieldFloats = OccluderFloats = OccluderInts = nullptr;
   CapTable = ClipTable = MergeTable = nullptr;
-  StateTarget = DepthStencil = nullptr;
+  StateTarget = DepthStencil = BoundsTarget = nullptr;
   UploadedBytes = 0;
   FieldsDirty = OccludersDirty = true;
   LastFrame = DeferredFrame{};

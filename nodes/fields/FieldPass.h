@@ -10,8 +10,10 @@
 // It is a DeferredAOPass (render/DeferredAOPass.h: G-buffer with instance ids, upsampling, combine,
 // read-back, stage timers). Its "fields" stage is seed 000's Algorithm 3, one draw per occluder:
 //   start:     occlusion 0 and the view z at every AO-target texel (FieldPassStartFS.glsl);
-//   occluders: for each occluder, cube fields first, a draw scissored to the screen rectangle of
-//              its influence sphere (FieldScreenRect.h; occluders off screen cost nothing), whose
+//   cull:      the receivers' depth range per tile of 16 x 16 AO-target texels (FieldPassBoundsFS),
+//              read back, so that each occluder is drawn only over the tiles whose receivers its
+//              influence sphere reaches (FieldScreenRect.h; occluders off screen cost nothing);
+//   occluders: for each occluder, cube fields first, draws scissored to those tiles, whose
 //              fragments leave at once where there is no receiver, the pixel is the occluder's
 //              own, or the point is outside the sphere (beyond it A is exactly 0); the others
 //              evaluate the field (cube: Algorithm 1; grid: the 6- or 4-term lookup) and combine:
@@ -28,6 +30,7 @@
 
 #include "fields/FieldGpuData.h"
 #include "fields/FieldPassSettings.h"
+#include "fields/FieldScreenRect.h"
 #include "render/DeferredAOPass.h"
 
 namespace aokit {
@@ -63,6 +66,7 @@ class FieldPass : public DeferredAOPass {
   // their rectangles cover: the work of the fields stage.
   int GetDrawnOccluders() const { return DrawnOccluders; }
   long long GetDrawnTexels() const { return DrawnTexels; }
+  int GetDrawCalls() const { return DrawCalls; }
 
   void Render(const vtkRenderState* s) override;
 
@@ -82,6 +86,7 @@ class FieldPass : public DeferredAOPass {
   bool Upload(vtkOpenGLRenderWindow* renWin);  // false: too large for this GL (reported)
   void BindFieldData(vtkShaderProgram* p) const;
   bool RenderOccluders(DeferredFrame& f);
+  bool ReadTileDepths(DeferredFrame& f, TileDepths& tiles);
   void RenderSlice(const vtkRenderState* s);
 
   FieldPassSettings Settings;
@@ -100,9 +105,10 @@ class FieldPass : public DeferredAOPass {
   vtkSmartPointer<vtkTextureObject> DepthStencil;  // AO-target size: receivers' depth and instance ids
   std::size_t UploadedBytes = 0;  // of the buffer textures
   std::string EvalSource, OccluderSource, SliceSource;  // stage sources with FieldPassEval.glsl in
-  std::unique_ptr<FullScreenStage> StartStage, CubeStage, GridStage, ResolveStage, SliceStage;
-  long long DrawnTexels = 0;  // last frame: texels inside the occluders' rectangles (tests, stats)
-  int DrawnOccluders = 0;
+  std::unique_ptr<FullScreenStage> BoundsStage, StartStage, CubeStage, GridStage, ResolveStage, SliceStage;
+  vtkSmartPointer<vtkTextureObject> BoundsTarget;  // per culling tile: the receivers' view-depth range
+  long long DrawnTexels = 0;  // last frame: texels inside the occluders' scissor rectangles (tests, stats)
+  int DrawnOccluders = 0, DrawCalls = 0;
   DeferredFrame LastFrame;  // the last frame's G-buffer and matrices, for the slice view
 
   FieldPass(const FieldPass&) = delete;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace aokit {
 
@@ -42,6 +43,81 @@ TexelRect sphereTexelRect(const glm::dvec3& c, double r, const TargetGeometry& t
       !texels(ny0, ny1, t.gbufferHeight, t.guardY, t.screenHeight, t.downsample, t.targetHeight, out.y0, out.y1))
     return {};
   return out;
+}
+
+namespace {
+
+// View-space point at NDC (x, y) and view z (DeferredCommon.glsl's aoUnproject).
+glm::dvec3 unproject(const TargetGeometry& t, double nx, double ny, double z) {
+  const double w = t.clip[2][2] * z + t.clip[2][3];
+  return {(nx * w - t.clip[0][2] * z - t.clip[0][3]) / t.clip[0][0],
+          (ny * w - t.clip[1][2] * z - t.clip[1][3]) / t.clip[1][1], z};
+}
+
+// NDC of the centre of the G-buffer texel that AO-target texel c stands for, along one axis.
+double texelNdc(int c, int ds, int screen, int guard, int size) {
+  const int g = std::min(c * ds, screen - 1) + guard;
+  return (g + 0.5) / size * 2.0 - 1.0;
+}
+
+}  // namespace
+
+std::vector<TexelRect> sphereTexelRuns(const glm::dvec3& c, double r, const TargetGeometry& t, const TileDepths& tiles) {
+  std::vector<TexelRect> runs;
+  const TexelRect rect = sphereTexelRect(c, r, t);
+  if (rect.empty() || tiles.tile < 1) return runs;
+  const int n = tiles.tile;
+  std::vector<TexelRect> previous, current;
+  auto flush = [&](std::vector<TexelRect>& rows) {
+    runs.insert(runs.end(), rows.begin(), rows.end());
+    rows.clear();
+  };
+  for (int ty = rect.y0 / n; ty <= rect.y1 / n && ty < tiles.tilesY; ++ty) {
+    current.clear();
+    const int y0 = std::max(rect.y0, ty * n), y1 = std::min(rect.y1, ty * n + n - 1);
+    const double ny0 = texelNdc(ty * n, t.downsample, t.screenHeight, t.guardY, t.gbufferHeight);
+    const double ny1 = texelNdc(std::min(ty * n + n - 1, t.targetHeight - 1), t.downsample, t.screenHeight, t.guardY,
+                                t.gbufferHeight);
+    int open = -1;  // first tile of the run being built
+    auto close = [&](int txEnd) {  // tiles open .. txEnd - 1
+      if (open < 0) return;
+      current.push_back({std::max(rect.x0, open * n), y0, std::min(rect.x1, txEnd * n - 1), y1});
+      open = -1;
+    };
+    for (int tx = rect.x0 / n; tx <= rect.x1 / n && tx < tiles.tilesX; ++tx) {
+      const std::size_t at = 2 * (static_cast<std::size_t>(ty) * tiles.tilesX + tx);
+      const double zNear = tiles.zRange[at], zFar = tiles.zRange[at + 1];
+      bool keep = zNear >= zFar;
+      if (keep) {
+        const double nx0 = texelNdc(tx * n, t.downsample, t.screenWidth, t.guardX, t.gbufferWidth);
+        const double nx1 = texelNdc(std::min(tx * n + n - 1, t.targetWidth - 1), t.downsample, t.screenWidth,
+                                    t.guardX, t.gbufferWidth);
+        glm::dvec3 lo(1e300), hi(-1e300);
+        for (int k = 0; k < 8; ++k) {
+          const glm::dvec3 q = unproject(t, (k & 1) ? nx1 : nx0, (k & 2) ? ny1 : ny0, (k & 4) ? zFar : zNear);
+          lo = glm::min(lo, q);
+          hi = glm::max(hi, q);
+        }
+        const glm::dvec3 slack = 1e-4 * (glm::abs(lo) + glm::abs(hi)) + 1e-6;  // float G-buffer depths
+        const glm::dvec3 d = c - glm::clamp(c, lo - slack, hi + slack);
+        keep = glm::dot(d, d) <= r * r;
+      }
+      if (keep && open < 0) open = tx;
+      if (!keep) close(tx);
+    }
+    close(std::min(rect.x1 / n, tiles.tilesX - 1) + 1);
+    // Rows whose runs match the previous row's extend them.
+    if (current.size() == previous.size() &&
+        std::equal(current.begin(), current.end(), previous.begin(),
+                   [](const TexelRect& a, const TexelRect& b) { return a.x0 == b.x0 && a.x1 == b.x1; })) {
+      for (std::size_t i = 0; i < current.size(); ++i) previous[i].y1 = current[i].y1;
+    } else {
+      flush(previous);
+      previous = current;
+    }
+  }
+  flush(previous);
+  return runs;
 }
 
 }  // namespace aokit

@@ -8,6 +8,8 @@
 // screen, make it empty. Pixel g of the G-buffer sits at NDC (g + 0.5) / size * 2 - 1
 // (DeferredCommon.glsl) and AO-target texel c stands for G-buffer texel min(c ds, screen - 1) +
 // guard; the texel range is widened by one on each side against rounding.
+#include <vector>
+
 #include <glm/glm.hpp>
 
 namespace aokit {
@@ -26,5 +28,21 @@ struct TargetGeometry {
 };
 
 TexelRect sphereTexelRect(const glm::dvec3& centreView, double radius, const TargetGeometry& t);
+
+// Depth ranges of the receivers per tile of the AO target (FieldPassBoundsFS.glsl), read back once
+// a frame: zRange[2 (ty tilesX + tx)] = nearest view z, [+1] = farthest (nearest < farthest: none).
+struct TileDepths {
+  int tile = 16;  // tile side, AO-target texels
+  int tilesX = 0, tilesY = 0;
+  std::vector<float> zRange;
+};
+
+// The part of sphereTexelRect that holds receivers the sphere can reach, as scissor rectangles:
+// tiles whose receivers' view-space box (the frustum slice through the tile's outermost pixel
+// centres between its nearest and farthest receiver) misses the sphere are dropped, the rest
+// merged into runs along rows and then rows with equal runs. Every receiver of a kept tile lies in
+// that box, so a dropped tile holds no receiver within the sphere.
+std::vector<TexelRect> sphereTexelRuns(const glm::dvec3& centreView, double radius, const TargetGeometry& t,
+                                       const TileDepths& tiles);
 
 }  // namespace aokit
