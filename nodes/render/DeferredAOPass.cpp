@@ -43,8 +43,10 @@ void validate(const DeferredConfig& c) {
   if (c.downsample != 1 && c.downsample != 2 && c.downsample != 4)
     throw std::invalid_argument("deferred AO: downsample must be 1, 2 or 4");
   if (c.aoChannels != 1 && c.aoChannels != 4) throw std::invalid_argument("deferred AO: AO channels must be 1 or 4");
-  if (c.upsample.window != 0 && (c.upsample.window < 2 || c.upsample.window > 32))
-    throw std::invalid_argument("deferred AO: upsampling window must be 0 or 2..32 pixels");
+  if (c.upsample.window < 0 || c.upsample.window > 64)
+    throw std::invalid_argument("deferred AO: upsampling window must be 0..64 pixels");
+  if (!(c.upsample.normalSupport > 0.0 && c.upsample.normalSupport <= 2.0))
+    throw std::invalid_argument("deferred AO: normal support must be in (0, 2]");
   if (!(c.upsample.depthTolerance > 0.0 && c.upsample.depthTolerance <= 1.0))
     throw std::invalid_argument("deferred AO: depth tolerance must be in (0, 1]");
   if (!(c.radius > 0.0) || !std::isfinite(c.radius)) throw std::invalid_argument("deferred AO: radius must be positive");
@@ -247,14 +249,14 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
 bool DeferredAOPass::RenderUpsample(vtkTextureObject* ao) {
   vtkShaderProgram* p = UpsampleStage->ready(Frame.renWin, CombineDefines(false));
   if (!p) return false;
-  ActiveTextures inputs{ao, ZTarget};
+  ActiveTextures inputs{ao};
   Frame.bindCommon(p);
   p->SetUniformi("aoResult", ao->GetTextureUnit());
-  p->SetUniformi("aoResultZ", ZTarget->GetTextureUnit());
   p->SetUniformi("aoDownsample", Frame.config.downsample);
   p->SetUniformi("aoWindow", Frame.config.upsample.window);
   const double radius = Frame.config.upsample.positionRadius > 0.0 ? Frame.config.upsample.positionRadius : Frame.config.radius;
   p->SetUniformf("aoPositionRadius", static_cast<float>(radius));
+  p->SetUniformf("aoNormalSupport", static_cast<float>(Frame.config.upsample.normalSupport));
   p->SetUniformf("aoRange", static_cast<float>(Frame.config.upsample.aoRange));
   UpsampleStage->renderInto(Framebuffer, {RowTarget});
   return true;
@@ -275,6 +277,7 @@ bool DeferredAOPass::Combine(FullScreenStage& stage, bool outputAO, Draw&& draw)
   p->SetUniformi("aoWindow", Frame.config.upsample.window);
   const double radius = Frame.config.upsample.positionRadius > 0.0 ? Frame.config.upsample.positionRadius : Frame.config.radius;
   p->SetUniformf("aoPositionRadius", static_cast<float>(radius));
+  p->SetUniformf("aoNormalSupport", static_cast<float>(Frame.config.upsample.normalSupport));
   p->SetUniformf("aoRange", static_cast<float>(Frame.config.upsample.aoRange));
   draw();
   return true;
