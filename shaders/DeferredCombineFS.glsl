@@ -18,6 +18,7 @@ in vec2 texCoord;
 uniform sampler2D aoResult;   // the family's AO at the target size, 0 on background
 uniform sampler2D aoResultZ;  // view z at the target size, +1 on background
 uniform sampler2D aoRows;     // AO_UPSAMPLE 2: the horizontal pass (screen width x target rows)
+uniform sampler2D aoRowGuide; // AO_UPSAMPLE 2: its rows' view normal (xyz) and z (w; +1: none)
 uniform int aoDownsample;
 uniform float aoTolerance;
 uniform float aoRadius;
@@ -25,6 +26,7 @@ uniform int aoWindow;
 uniform float aoPositionRadius;
 uniform float aoNormalSupport;
 uniform float aoRange;
+uniform float aoDomainWeights[68];  // AO_UPSAMPLE 2: as in DeferredUpsampleFS.glsl
 //VTK::Output::Dec
 
 #if AO_TRANSFER
@@ -42,12 +44,13 @@ float aoWendland(float t, float h) { float q = clamp(t / h, 0.0, 1.0); float a =
 // column x (the pixel row that row stands for); 0 off surfaces.
 float aoRowGeometry(vec3 p, vec3 n, int x, int j)
 {
+  vec4 guide = texelFetch(aoRowGuide, ivec2(x, j), 0);
+  if (guide.w > 0.0) return 0.0;
   ivec2 t = ivec2(x, aoCellPixel(ivec2(0, j), aoDownsample).y) + aoGuard;
-  vec4 packedQ = aoPackedNormal(t);
-  if (packedQ.w < 0.5) return 0.0;
-  float w = aoWendland(length(aoViewPosition(t) - p), aoPositionRadius);
+  vec2 ndc = (vec2(t) + 0.5) / vec2(textureSize(aoDepth, 0)) * 2.0 - 1.0;
+  float w = aoWendland(length(aoUnproject(ndc, guide.w) - p), aoPositionRadius);
 #if AO_NORMAL_KERNEL
-  w *= aoWendland(1.0 - dot(n, aoUnpackNormal(packedQ)), aoNormalSupport);
+  w *= aoWendland(1.0 - dot(n, guide.xyz), aoNormalSupport);
 #endif
   return w;
 }
@@ -104,9 +107,13 @@ AO_TYPE aoAt(ivec2 pix, ivec2 g, vec3 p)
     if (h.x < 0.0) continue;  // no surface, or no contributor, in that row
     float w = aoRowGeometry(p, n, pix.x, j);
     if (w <= 0.0) continue;
-    float domain = 0.0;
-    for (int qy = max(lo, j * ds); qy <= min(hi, j * ds + ds - 1); ++qy)
-      domain += aoWendland(float(abs(qy - pix.y)), float(aoWindow));
+    float domain = aoDomainWeights[j * ds - pix.y + r + ds - 1];
+    if (j * ds + ds - 1 > aoScreen.y - 1)  // the last row reaches past the screen's edge
+    {
+      domain = 0.0;
+      for (int qy = max(lo, j * ds); qy <= min(hi, j * ds + ds - 1); ++qy)
+        domain += aoWendland(float(abs(qy - pix.y)), float(aoWindow));
+    }
     w *= domain;
 #if AO_RANGE_KERNEL
     if (useAO) w *= aoWendland(abs(AO_SCALAR(h) - AO_SCALAR(hc)), aoRange);

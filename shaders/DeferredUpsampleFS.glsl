@@ -8,8 +8,9 @@
 // prints 1 + n.n', which would weigh opposite normals most) and AO w(|a' - a_own|, h_a), the last
 // only when this pixel's own texel (x / ds, j) passes the position and normal kernels. The range
 // weights depend on the texel only, so the loop runs over texels and adds up the domain weights of
-// their window pixels: O(m / ds) reads. -1 marks rows with no surface or no contributor. The
-// vertical pass is done inside the combine stage (DeferredCombineFS.glsl).
+// their window pixels: O(m / ds) reads. -1 marks rows with no surface or no contributor. Out 1:
+// the row's guide for the vertical pass, done inside the combine stage (DeferredCombineFS.glsl):
+// the view normal and view z of the pixel (+1 in .w where none).
 //AOKIT::Defines
 //AOKIT::DeferredCommon
 in vec2 texCoord;
@@ -19,6 +20,8 @@ uniform int aoWindow;         // m
 uniform float aoPositionRadius;
 uniform float aoNormalSupport;
 uniform float aoRange;
+uniform float aoDomainWeights[68];  // domain weight of a texel whose first pixel lies o pixels away,
+                                    // at o + m/2 + ds - 1 (DeferredAOPass.cpp, domainWeights)
 //VTK::Output::Dec
 
 float aoWendland(float t, float h) { float q = clamp(t / h, 0.0, 1.0); float a = 1.0 - q; return a * a * a * a * (4.0 * q + 1.0); }
@@ -46,10 +49,12 @@ void main()
   if (packedN.w < 0.5)
   {
     gl_FragData[0] = vec4(-1.0);
+    gl_FragData[1] = vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
   vec3 p = aoViewPosition(g);
   vec3 n = aoUnpackNormal(packedN);
+  gl_FragData[1] = vec4(n, p.z);
   int own = min(o.x / ds, lowSize.x - 1);
   vec4 hc = texelFetch(aoResult, ivec2(own, o.y), 0);
   bool useAO = aoGeometryWeight(p, n, ivec2(aoCellPixel(ivec2(own, 0), ds).x, y) + aoGuard) > 0.0;
@@ -61,9 +66,13 @@ void main()
   {
     float w = aoGeometryWeight(p, n, ivec2(aoCellPixel(ivec2(i, 0), ds).x, y) + aoGuard);
     if (w <= 0.0) continue;
-    float domain = 0.0;
-    for (int qx = max(lo, i * ds); qx <= min(hi, i * ds + ds - 1); ++qx)
-      domain += aoWendland(float(abs(qx - o.x)), float(aoWindow));
+    float domain = aoDomainWeights[i * ds - o.x + r + ds - 1];
+    if (i * ds + ds - 1 > aoScreen.x - 1)  // the last texel reaches past the screen's edge
+    {
+      domain = 0.0;
+      for (int qx = max(lo, i * ds); qx <= min(hi, i * ds + ds - 1); ++qx)
+        domain += aoWendland(float(abs(qx - o.x)), float(aoWindow));
+    }
     vec4 h = texelFetch(aoResult, ivec2(i, o.y), 0);
     w *= domain;
 #if AO_RANGE_KERNEL

@@ -1,5 +1,6 @@
 #include "render/DeferredAOPass.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -72,6 +73,26 @@ class ActiveTextures {
   std::vector<vtkTextureObject*> active_;
 };
 
+// The separable upsampler's domain weights per tap: entry o + r + ds - 1 holds the sum of
+// w(|o + t|, m) over t = 0..ds-1 with |o + t| <= r = m / 2, the weight of a texel whose first
+// pixel lies o pixels from the filtered one (DeferredUpsampleFS.glsl). Wendland as the shaders
+// write it.
+std::vector<float> domainWeights(int m, int ds) {
+  auto wendland = [](float t, float h) {
+    const float q = std::clamp(t / h, 0.0f, 1.0f), a = 1.0f - q;
+    return a * a * a * a * (4.0f * q + 1.0f);
+  };
+  const int r = m / 2;
+  std::vector<float> out(static_cast<std::size_t>(2 * r + ds), 0.0f);
+  for (int o = -r - ds + 1; o <= r; ++o) {
+    float sum = 0.0f;
+    for (int t = 0; t < ds; ++t)
+      if (std::abs(o + t) <= r) sum += wendland(static_cast<float>(std::abs(o + t)), static_cast<float>(m));
+    out[static_cast<std::size_t>(o + r + ds - 1)] = sum;
+  }
+  return out;
+}
+
 }  // namespace
 
 void DeferredFrame::bindCommon(vtkShaderProgram* p) const {
@@ -135,17 +156,21 @@ void DeferredAOPass::AllocateTargets(vtkOpenGLRenderWindow* renWin) {
     AllocatedChannels = Frame.config.aoChannels;
     AOTarget = makeTexture2D(renWin, format, w, h);
     ZTarget = makeTexture2D(renWin, TexFormat::R32F, w, h);
-    RowTarget = nullptr;
+    RowTarget = RowGuide = nullptr;
   } else if (w != Frame.targetWidth || h != Frame.targetHeight) {
     AOTarget->Resize(w, h);
     ZTarget->Resize(w, h);
   }
   if (Frame.config.upsample.window > 0) {
-    if (!RowTarget) RowTarget = makeTexture2D(renWin, format, Frame.screenWidth, h);
-    else if (static_cast<int>(RowTarget->GetWidth()) != Frame.screenWidth || static_cast<int>(RowTarget->GetHeight()) != h)
+    if (!RowTarget) {
+      RowTarget = makeTexture2D(renWin, format, Frame.screenWidth, h);
+      RowGuide = makeTexture2D(renWin, TexFormat::RGBA32F, Frame.screenWidth, h);
+    } else if (static_cast<int>(RowTarget->GetWidth()) != Frame.screenWidth || static_cast<int>(RowTarget->GetHeight()) != h) {
       RowTarget->Resize(Frame.screenWidth, h);
+      RowGuide->Resize(Frame.screenWidth, h);
+    }
   } else {
-    RowTarget = nullptr;
+    RowTarget = RowGuide = nullptr;
   }
   Frame.targetWidth = w;
   Frame.targetHeight = h;
@@ -258,7 +283,9 @@ bool DeferredAOPass::RenderUpsample(vtkTextureObject* ao) {
   p->SetUniformf("aoPositionRadius", static_cast<float>(radius));
   p->SetUniformf("aoNormalSupport", static_cast<float>(Frame.config.upsample.normalSupport));
   p->SetUniformf("aoRange", static_cast<float>(Frame.config.upsample.aoRange));
-  UpsampleStage->renderInto(Framebuffer, {RowTarget});
+  const std::vector<float> domain = domainWeights(Frame.config.upsample.window, Frame.config.downsample);
+  p->SetUniform1fv("aoDomainWeights", static_cast<int>(domain.size()), domain.data());
+  UpsampleStage->renderInto(Framebuffer, {RowTarget, RowGuide});
   return true;
 }
 
@@ -266,11 +293,12 @@ template <class Draw>
 bool DeferredAOPass::Combine(FullScreenStage& stage, bool outputAO, Draw&& draw) {
   vtkShaderProgram* p = stage.ready(Frame.renWin, CombineDefines(outputAO));
   if (!p) return false;
-  ActiveTextures inputs{Result, ZTarget, RowTarget.Get()};
+  ActiveTextures inputs{Result, ZTarget, RowTarget.Get(), RowGuide.Get()};
   Frame.bindCommon(p);
   p->SetUniformi("aoResult", Result->GetTextureUnit());
   p->SetUniformi("aoResultZ", ZTarget->GetTextureUnit());
   if (RowTarget) p->SetUniformi("aoRows", RowTarget->GetTextureUnit());
+  if (RowGuide) p->SetUniformi("aoRowGuide", RowGuide->GetTextureUnit());
   p->SetUniformi("aoDownsample", Frame.config.downsample);
   p->SetUniformf("aoTolerance", static_cast<float>(Frame.config.upsample.depthTolerance));
   p->SetUniformf("aoRadius", static_cast<float>(Frame.config.radius));
@@ -279,6 +307,10 @@ bool DeferredAOPass::Combine(FullScreenStage& stage, bool outputAO, Draw&& draw)
   p->SetUniformf("aoPositionRadius", static_cast<float>(radius));
   p->SetUniformf("aoNormalSupport", static_cast<float>(Frame.config.upsample.normalSupport));
   p->SetUniformf("aoRange", static_cast<float>(Frame.config.upsample.aoRange));
+  if (Frame.config.upsample.window > 0) {
+    const std::vector<float> domain = domainWeights(Frame.config.upsample.window, Frame.config.downsample);
+    p->SetUniform1fv("aoDomainWeights", static_cast<int>(domain.size()), domain.data());
+  }
   draw();
   return true;
 }
@@ -328,6 +360,7 @@ bool DeferredAOPass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& a
 
 std::size_t DeferredAOPass::MemoryBytes() const {
   return GBuffer->MemoryBytes() + textureBytes(AOTarget) + textureBytes(ZTarget) + textureBytes(RowTarget) +
+         textureBytes(RowGuide) +
          FamilyMemoryBytes();
 }
 
@@ -342,7 +375,7 @@ void DeferredAOPass::ReleaseGraphicsResources(vtkWindow* w) {
     renWin->MakeCurrent();
     Timer.release();
   }
-  AOTarget = ZTarget = RowTarget = nullptr;
+  AOTarget = ZTarget = RowTarget = RowGuide = nullptr;
   Result = nullptr;
   Framebuffer = nullptr;
   AllocatedChannels = 0;

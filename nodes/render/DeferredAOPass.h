@@ -156,7 +156,10 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   StageTimer Timer;
   DeferredFrame Frame;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  vtkSmartPointer<vtkTextureObject> AOTarget, ZTarget, RowTarget;  // RowTarget: separable upsampling
+  // Separable upsampling: the horizontal pass's AO (RowTarget) and the guide of its rows
+  // (RowGuide: view normal and z of the pixel each row texel stands for), so that the vertical
+  // pass reads one texel per tap for its range weights, not the G-buffer's normal and depth.
+  vtkSmartPointer<vtkTextureObject> AOTarget, ZTarget, RowTarget, RowGuide;
   vtkTextureObject* Result = nullptr;                              // the family's final AO
   int AllocatedChannels = 0;
   std::unique_ptr<FullScreenStage> UpsampleStage, CombineStage, AOOutputStage;
