@@ -8,7 +8,8 @@
 //   VOX_MODE 1  DominantCentre: along d, one voxel floor(z) per column centre covered;
 //   VOX_MODE 2  ColumnCentre: the same along grid z only (the seed's, in a rotated frame);
 //   VOX_MODE 3  parity: column centres along z flip (XOR) every voxel whose centre lies behind
-//               the triangle (k >= floor(z - 0.5) + 1, z clamped to [-1, nz + 1]).
+//               the triangle (k >= floor(z - 0.5) + 1, z clamped to [-1, nz + 1]), written as a
+//               marker at the first such voxel and resolved by a prefix XOR (VoxelMergeCS.glsl).
 // Column centres follow ColumnRaster.h's top-left style rule and its antisymmetric edge function;
 // the three-axis test runs relative to each column's corner.
 // Work is split into tiles of VOX_TILE x VOX_TILE columns: workgroup row y of a dispatch handles
@@ -53,7 +54,7 @@ void voxSet(ivec3 v)
 }
 
 // Voxels k0..k1 of column (i, j), clamped: one atomic per 32-bit word.
-void voxRun(int i, int j, int k0, int k1, bool flip)
+void voxRun(int i, int j, int k0, int k1)
 {
   if (i < 0 || j < 0 || i >= voxDims.x || j >= voxDims.y) return;
   k0 = max(k0, 0);
@@ -63,8 +64,7 @@ void voxRun(int i, int j, int k0, int k1, bool flip)
     int last = min(k1, k | 31);
     int n = last - k + 1;
     uint mask = (n == 32 ? 0xffffffffu : ((1u << uint(n)) - 1u)) << uint(k & 31);
-    if (flip) imageAtomicXor(voxGrid, voxTexel(i, j, k), mask);
-    else imageAtomicOr(voxGrid, voxTexel(i, j, k), mask);
+    imageAtomicOr(voxGrid, voxTexel(i, j, k), mask);
     k = last + 1;
   }
 }
@@ -131,7 +131,7 @@ void voxTriangle(vec3 a, vec3 b, vec3 c)
       int kLo = max(0, voxFloor(lo, -1, voxDims[d])), kHi = min(voxDims[d] - 1, voxFloor(hi, -1, voxDims[d]));
       if (d == 2)
       {
-        voxRun(iu, iv, kLo, kHi, false);
+        voxRun(iu, iv, kLo, kHi);
       }
       else
       {
@@ -200,10 +200,13 @@ void voxColumnCentres(vec3 a, vec3 b, vec3 c, ivec3 dims, ivec3 swz)
 }
 
 #if VOX_MODE == 3
+// SolidVoxelizer.cpp flips voxels first..nz-1 of the column; here only voxel max(first, 0) is
+// flipped, a marker: VoxelMergeCS.glsl turns the markers into the flipped runs by a prefix XOR
+// along each column (the same bits, one atomic per fragment rather than one per word).
 void voxColumn(int i, int j, float z, ivec3 swz)
 {
-  int first = int(floor(min(max(z, -1.0), float(voxDims.z) + 1.0) - 0.5)) + 1;
-  voxRun(i, j, first, voxDims.z - 1, true);
+  int first = max(int(floor(min(max(z, -1.0), float(voxDims.z) + 1.0) - 0.5)) + 1, 0);
+  if (first <= voxDims.z - 1) imageAtomicXor(voxGrid, voxTexel(i, j, first), 1u << uint(first & 31));
 }
 #else
 void voxColumn(int i, int j, float z, ivec3 swz)

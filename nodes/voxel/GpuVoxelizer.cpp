@@ -147,7 +147,8 @@ void GpuVoxelizer::voxelize(vtkOpenGLRenderWindow* renWin, const VoxelFrame& fra
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindImageTexture(0, handleOf(grid_), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     glBindImageTexture(1, handleOf(parityGrid_), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    merge_->dispatch(renWin, (grid_->GetWidth() + 7) / 8, (grid_->GetHeight() + 7) / 8);
+    merge_->setIVec3("voxDims", frame.dims.x, frame.dims.y, frame.dims.z);
+    merge_->dispatch(renWin, (frame.dims.x + 7) / 8, (frame.dims.y + 7) / 8);
     glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);

@@ -3,8 +3,9 @@
 // into the bit-packed grid of VoxelGrid.h, by compute shaders with image atomics
 // (shaders/VoxelizeCS.glsl), one invocation per triangle, running CpuVoxelizer's algorithms:
 // ThreeAxis (conservative dominant-axis projection), DominantCentre, and the seed's ColumnCentre
-// in a rotated frame; with `solid`, closed casters are parity-filled into a second grid that is
-// ORed in (SolidVoxelizer.h). So the GPU grid equals the CPU's voxel for voxel, up to float
+// in a rotated frame; with `solid`, closed casters are parity-filled into a second grid (one
+// marker per column centre, then a prefix XOR along each column) that is ORed in
+// (SolidVoxelizer.h). So the GPU grid equals the CPU's voxel for voxel, up to float
 // round-off where a triangle touches a voxel's boundary.
 //
 // The grid is a GL_R32UI 2D texture of 4 nx x (ny slabs) texels: word c of column (i, j) in slab
