@@ -105,8 +105,11 @@ const MethodRegistrar registrar{{
         {"ha", SettingKind::Number, "AO kernel support", 1e-3, 1, {}, number(kDefaults.aoSupport)},
         {"view", SettingKind::Choice, "debug view", 0, 0, {"none", "ao", "normals", "depth", "voxels"}, "none"},
     },
-    {"res=64,rays=8,steps=4,scale=0.25,filter=32", "res=128,rays=8,steps=8,scale=0.25,filter=32",
-     "res=128,rays=16,steps=8", "", "rays=64,steps=12", "res=512,rays=128,steps=16"},
+    // Curve, cheap to accurate: quarter resolution with few rays (the first two take less AO time
+    // than vtkSSAOPass(32) and err less on every default scene, 512 x 384), then half resolution
+    // up to the seed's Table 1 (the defaults) and a finer grid.
+    {"res=128,rays=8,steps=4,scale=0.25,filter=16", "res=256,rays=16,steps=6,scale=0.25,filter=16",
+     "res=256,rays=16,steps=8", "", "res=512,rays=32,steps=8,budget=128"},
     make,
 }};
 
