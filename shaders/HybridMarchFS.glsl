@@ -86,12 +86,20 @@ ivec3 haoVoxel(vec3 g) { return ivec3(floor(clamp(g, vec3(-1.0), vec3(haoDims)))
 
 uint haoWord(int i, int j, int k) { return texelFetch(haoGrid, ivec2(4 * i + ((k >> 5) & 3), (k >> 7) * haoDims.y + j), 0).r; }
 
-// Any voxel k0..k1 (clamped) of column (i, j) set? Outside the grid reads as empty.
+// Any voxel k0..k1 (clamped) of column (i, j) set? Outside the grid reads as empty. Most steps
+// stay within one 32-bit word: one fetch, no loop.
 bool haoAnyInRun(int i, int j, int k0, int k1)
 {
   if (i < 0 || j < 0 || i >= haoDims.x || j >= haoDims.y) return false;
   k0 = max(k0, 0);
   k1 = min(k1, haoDims.z - 1);
+  if (k0 > k1) return false;
+  if ((k0 >> 5) == (k1 >> 5))
+  {
+    int n = k1 - k0 + 1;
+    uint mask = (n == 32 ? 0xffffffffu : ((1u << uint(n)) - 1u)) << uint(k0 & 31);
+    return (haoWord(i, j, k0) & mask) != 0u;
+  }
   for (int k = k0; k <= k1;)
   {
     int last = min(k1, k | 31);
