@@ -31,7 +31,7 @@ void validate(const HybridSettings& s) {
   if (needMiB > s.memoryBudgetMiB) {
     std::ostringstream msg;
     msg << "hybrid: a " << s.gridResolution << "^3 grid needs " << needMiB << " MiB, over the memory budget of "
-        << s.memoryBudgetMiB << " MiB (raise memoryBudgetMiB or lower gridResolution)";
+        << s.memoryBudgetMiB << " MiB (raise the budget, or lower the resolution)";
     throw std::invalid_argument(msg.str());
   }
   if (s.frame != VoxelizingFrame::ThreeAxis && s.frame != VoxelizingFrame::Rotated &&
