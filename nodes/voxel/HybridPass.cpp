@@ -170,6 +170,11 @@ int raysPerMarchPass(const HybridMarchConstants& c, bool hasGrid) {
 }
 
 vtkTextureObject* HybridPass::RenderAO(DeferredFrame& f) {
+  // llvmpipe runs a compute dispatch at once on the calling thread, while timestamp queries are
+  // written when its rasterizer reaches them in a deferred scene: without a finish on both sides
+  // the voxelization would fall between two timestamps of the same scene and read as ~0 ms.
+  const bool timing = f.timer && f.timer->enabled();
+  if (timing) glFinish();
   try {
     Voxelize(f);
   } catch (const std::exception& e) {
@@ -179,6 +184,7 @@ vtkTextureObject* HybridPass::RenderAO(DeferredFrame& f) {
     return nullptr;
   }
   f.mark("voxelize");
+  if (timing) glFinish();
 
   vtkShaderProgram* p = MarchStage->ready(f.renWin, MarchDefines());
   if (!p) return nullptr;
