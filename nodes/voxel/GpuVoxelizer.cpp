@@ -1,6 +1,7 @@
 #include "voxel/GpuVoxelizer.h"
 
 #include <algorithm>
+#include <iostream>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -57,6 +58,16 @@ GpuVoxelizer::GpuVoxelizer()
 GpuVoxelizer::~GpuVoxelizer() = default;
 
 const char* GpuVoxelizer::ready(vtkOpenGLRenderWindow* renWin, VoxelizeMethod method, bool solid) {
+  // GL 4.3 compute and image atomics, 4.4 texture clears, 4.5 direct state access: a context
+  // without them (an old or macOS driver) gets the frame without AO, never a null call.
+  if (!glDispatchCompute || !glMemoryBarrier || !glBindImageTexture || !glClearTexImage || !glCreateBuffers ||
+      !glNamedBufferData || !glGetTextureImage || !glProgramUniformMatrix4fv || !glBindBufferBase) {
+    if (!reportedMissing_)
+      std::cerr << "aokit: the GPU voxelizer needs OpenGL 4.5 (compute shaders, image atomics, direct state "
+                   "access); this context lacks them\n";
+    reportedMissing_ = true;
+    return "voxelize";
+  }
   if (!surface_->ready(renWin, modeDefine(modeOf(method)))) return "voxelize";
   if (solid && !parity_->ready(renWin, modeDefine(3))) return "voxelize parity";
   if (solid && !merge_->ready(renWin, "")) return "voxel merge";

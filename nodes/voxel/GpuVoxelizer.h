@@ -44,7 +44,7 @@ class GpuVoxelizer {
   GpuVoxelizer& operator=(const GpuVoxelizer&) = delete;
 
   // Builds the programs this strategy needs (context current); returns the name of one that does
-  // not build, or nullptr.
+  // not build, or nullptr ("voxelize" too when the context lacks OpenGL 4.5).
   const char* ready(vtkOpenGLRenderWindow* renWin, VoxelizeMethod method, bool solid);
   // Clears the grid (sized frame.dims), voxelizes every caster, parity-fills the watertight ones
   // when `solid`, merges. ready() must have succeeded for the same method and solid. Throws
@@ -67,6 +67,7 @@ class GpuVoxelizer {
   std::unique_ptr<ComputeProgram> surface_, parity_, merge_;
   vtkSmartPointer<vtkTextureObject> grid_, parityGrid_;
   glm::ivec3 dims_{0};
+  bool reportedMissing_ = false;
 };
 
 // World -> grid coordinates of a frame in double (VoxelFrame::toGrid as a matrix).
