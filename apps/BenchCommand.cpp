@@ -26,8 +26,9 @@ struct BenchArgs {
   bool temporal = true;
 };
 
-const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes", "tank", "corridor",
-                                                 "room",         "open-box",         "bunny", "fandisk"};
+const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes",  "tank",
+                                                 "corridor",     "room",             "open-box", "bunny",
+                                                 "fandisk",      "hidden",           "behind"};
 
 void runBenchCommand(const BenchArgs& a) {
   // Everything is checked before the output folder exists: a refused run leaves nothing behind.
@@ -85,7 +86,7 @@ void addBenchCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bench", "time and error of every method against the reference");
   cmd->add_option("--scenes", args->scenes,
                   "scenes, separated by ',' or ';' (default: sphere-plane, sphere-offscreen, cubes, tank, corridor, "
-                  "room, open-box, bunny, fandisk)");
+                  "room, open-box, bunny, fandisk, hidden, behind)");
   cmd->add_option("--methods", args->methodsArg,
                   "methods, separated by ',' or ';': a method (all its bench settings) or method:key=value,key=value "
                   "(default: all)");
