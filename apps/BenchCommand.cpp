@@ -9,6 +9,7 @@
 #include "bench/SequenceBench.h"
 #include "methods/MethodRegistry.h"
 #include "output/AtomicFile.h"
+#include "output/OutputPaths.h"
 
 namespace aokit::cli {
 
@@ -25,8 +26,9 @@ struct BenchArgs {
   bool temporal = true;
 };
 
-const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes", "tank",    "stack",
-                                                 "corridor",     "room",             "open-box", "bunny", "fandisk"};
+const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes",  "tank",   "stack",
+                                                 "corridor",     "room",             "open-box", "bunny", "fandisk",
+                                                 "hidden",       "behind"};
 
 void runBenchCommand(const BenchArgs& a) {
   // Everything is checked before the output folder exists: a refused run leaves nothing behind.
@@ -53,6 +55,8 @@ void runBenchCommand(const BenchArgs& a) {
   cfg.frames = a.frames;
   cfg.seed = a.seed;
   cfg.loadScene = [&](const std::string& name) { return scenes.at(name); };
+  const std::string dir = a.outDir + "/";
+  checkOutputPaths({dir + "results.csv", dir + "chart.png", dir + "report.md", a.temporal ? dir + "temporal.csv" : ""});
 
   ensureDirectory(a.outDir);
   BenchCsvStream csv(a.outDir + "/results.csv");
@@ -82,21 +86,21 @@ void addBenchCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bench", "time and error of every method against the reference");
   cmd->add_option("--scenes", args->scenes,
                   "scenes, separated by ',' or ';' (default: sphere-plane, sphere-offscreen, cubes, tank, stack, "
-                  "corridor, room, open-box, bunny, fandisk)");
+                  "corridor, room, open-box, bunny, fandisk, hidden, behind)");
   cmd->add_option("--methods", args->methodsArg,
                   "methods, separated by ',' or ';': a method (all its bench settings) or method:key=value,key=value "
                   "(default: all)");
   cmd->add_option("--size", args->size, "image size WxH (the temporal run too)")->capture_default_str();
   cmd->add_option("--samples", args->samples, "reference rays per pixel (the temporal run too)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 1 << 16));
+      ->check(inRange(limits::kSamples));
   cmd->add_option("--frames", args->frames,
                   "timed pairs (base frame, method frame) per row, and frames of the temporal run")
       ->capture_default_str()
-      ->check(CLI::Range(1, 1000));
+      ->check(inRange(limits::kFrames));
   cmd->add_option("--falloff", args->falloff,
                   "falloff for every scene: binary, wendland, sqrt, exponential (default: each scene's)");
-  cmd->add_option("--seed", args->seed, "reference seed")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "reference seed")->capture_default_str()->check(inRange(limits::kSeed64));
   cmd->add_option("--output,-o", args->outDir, "output folder")->capture_default_str();
   cmd->add_flag("!--no-temporal", args->temporal, "skip the temporal-stability run on the animated scene");
   cmd->callback([args] { runBenchCommand(*args); });

@@ -8,6 +8,7 @@
 #include "bench/ErrorTimeChart.h"
 #include "methods/MethodRegistry.h"
 #include "output/AtomicFile.h"
+#include "output/OutputPaths.h"
 #include "output/ImageFiles.h"
 #include "headless/FrameCapture.h"
 #include "headless/SceneView.h"
@@ -36,8 +37,9 @@ void runDemo(const DemoArgs& a) {
   Scene scene = a.scene.load();
   applyFalloff(scene, a.falloff);
   for (const auto& [method, setting] : defaultBenchRuns()) makeTechnique(method, setting);
-  ensureDirectory(a.outDir);
   const std::string dir = a.outDir + "/";
+  checkOutputPaths({dir + "results.csv", dir + "chart.png", dir + "report.md", dir + "reference-ao.png"});
+  ensureDirectory(a.outDir);
 
   // Every method's lit frame and AO-only frame.
   {
@@ -90,7 +92,7 @@ void addDemoCommand(CLI::App& app) {
   args->scene.add(*cmd);
   cmd->add_option("--output,-o", args->outDir, "output folder")->capture_default_str();
   cmd->add_option("--samples", args->samples, "reference rays per pixel")->capture_default_str()->check(
-      CLI::Range(1, 1 << 16));
+      inRange(limits::kSamples));
   cmd->add_option("--falloff", args->falloff, "binary, wendland, sqrt, exponential (default: the scene's)");
   cmd->callback([args] { runDemo(*args); });
 }

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# One command from a clean clone: set up, build, and run every test (CTest, all offscreen).
+# One command from a clean clone: set up, build, and run every test (CTest, all offscreen), then the
+# same suite again in a build with AddressSanitizer and UndefinedBehaviorSanitizer.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/build.sh"
 unset DISPLAY
 ctest --test-dir "$root/build" --output-on-failure -j "$(nproc)"
+bash "$root/scripts/test-sanitizers.sh"

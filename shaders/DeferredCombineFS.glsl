@@ -7,6 +7,8 @@
 // selects a view. Upsampling (AO_UPSAMPLE): 0 none (full resolution), 1 the bilinear 2x2 taps
 // around the pixel that lie within a depth tolerance of it, 2 the vertical pass of the separable
 // joint bilateral filter over the horizontal pass's rows (DeferredUpsampleFS.glsl).
+// AO_DEBUG_VIEW 4 shows the family's result (first channel, grey) on every pixel: a family's own
+// debug image (voxels, field slices) rendered at the target size.
 //AOKIT::Defines
 #if AO_TRANSFER
 #extension GL_ARB_gpu_shader5 : require
@@ -17,12 +19,15 @@ uniform sampler2D aoResult;   // the family's AO at the target size, 0 on backgr
 uniform sampler2D aoResultZ;  // view z at the target size, +1 on background
 uniform sampler2D aoRows;     // AO_UPSAMPLE 2: the horizontal pass (screen width x target rows)
 uniform sampler2D aoBaked;    // AO_BAKED: per-vertex baked AO from the G-buffer (full resolution)
+uniform sampler2D aoRowGuide; // AO_UPSAMPLE 2: its rows' view normal (xyz) and z (w; +1: none)
 uniform int aoDownsample;
 uniform float aoTolerance;
 uniform float aoRadius;
 uniform int aoWindow;
 uniform float aoPositionRadius;
+uniform float aoNormalSupport;
 uniform float aoRange;
+uniform float aoDomainWeights[68];  // AO_UPSAMPLE 2: as in DeferredUpsampleFS.glsl
 //VTK::Output::Dec
 
 #if AO_TRANSFER
@@ -35,17 +40,35 @@ uniform float aoRange;
 
 float aoWendland(float t, float h) { float q = clamp(t / h, 0.0, 1.0); float a = 1.0 - q; return a * a * a * a * (4.0 * q + 1.0); }
 
+#if AO_UPSAMPLE == 2
+// Position and normal kernels between (p, n) and the guide of row j of the horizontal pass in
+// column x (the pixel row that row stands for); 0 off surfaces.
+float aoRowGeometry(vec3 p, vec3 n, int x, int j)
+{
+  vec4 guide = texelFetch(aoRowGuide, ivec2(x, j), 0);
+  if (guide.w > 0.0) return 0.0;
+  ivec2 t = ivec2(x, aoCellPixel(ivec2(0, j), aoDownsample).y) + aoGuard;
+  vec2 ndc = (vec2(t) + 0.5) / vec2(textureSize(aoDepth, 0)) * 2.0 - 1.0;
+  float w = aoWendland(length(aoUnproject(ndc, guide.w) - p), aoPositionRadius);
+#if AO_NORMAL_KERNEL
+  w *= aoWendland(1.0 - dot(n, guide.xyz), aoNormalSupport);
+#endif
+  return w;
+}
+#endif
+
 // AO at screen pixel `pix` (G-buffer texel g) of view-space point p.
 AO_TYPE aoAt(ivec2 pix, ivec2 g, vec3 p)
 {
 #if AO_UPSAMPLE == 0
   return AO_PICK(texelFetch(aoResult, pix, 0));
 #elif AO_UPSAMPLE == 1
-  // Low-resolution texel i stands for pixel ds i. Bilinear weights over the 2x2 texels around the
-  // pixel, each kept only if its depth is within the tolerance of this pixel's; if none is, the one
-  // nearest in depth (a pixel at a silhouette takes its own side's value).
-  ivec2 base = pix / aoDownsample;
-  vec2 t = vec2(pix - base * aoDownsample) / float(aoDownsample);
+  // Low-resolution texel i stands for pixel ds i + (ds - 1) / 2. Bilinear weights over the 2x2
+  // texels around the pixel, each kept only if its depth is within the tolerance of this pixel's;
+  // if none is, the one nearest in depth (a pixel at a silhouette takes its own side's value).
+  ivec2 rel = pix - ivec2((aoDownsample - 1) / 2);
+  ivec2 base = ivec2(floor(vec2(rel) / float(aoDownsample)));
+  vec2 t = vec2(rel - base * aoDownsample) / float(aoDownsample);
   vec2 corner = (vec2(base) + 1.0) / vec2(textureSize(aoResultZ, 0));
   vec4 bilinear = vec4((1.0 - t.x) * t.y, t.x * t.y, t.x * (1.0 - t.y), (1.0 - t.x) * (1.0 - t.y));
   vec4 zq = textureGather(aoResultZ, corner);  // order: (0,1) (1,1) (1,0) (0,0)
@@ -66,36 +89,40 @@ AO_TYPE aoAt(ivec2 pix, ivec2 g, vec3 p)
   return dot(w, textureGather(aoResult, corner));
 #endif
 #else
-  // Vertical pass of the separable joint bilateral filter: rows j of the horizontal pass whose
-  // pixels lie within the window around this one.
+  // Vertical pass of the separable joint bilateral filter (BilateralUpsample.h): window pixels qy
+  // in [y - m/2, y + m/2] read row qy / ds of the horizontal pass, whose guide is the pixel row
+  // that row stands for; range weights per row, domain weights of its window pixels added up.
   vec3 n = aoUnpackNormal(aoPackedNormal(g));
   int rows = textureSize(aoRows, 0).y;
-  int cj = clamp((pix.y + aoDownsample / 2) / aoDownsample, 0, rows - 1);
-  vec4 hc = texelFetch(aoRows, ivec2(pix.x, cj), 0);
-  float halfWindow = 0.5 * float(aoWindow);
-  int first = max(0, int(ceil((float(pix.y) - halfWindow) / float(aoDownsample))));
-  int last = min(rows - 1, int(floor((float(pix.y) + halfWindow) / float(aoDownsample))));
+  int ds = aoDownsample;
+  int own = min(pix.y / ds, rows - 1);
+  vec4 hc = texelFetch(aoRows, ivec2(pix.x, own), 0);
+  bool useAO = hc.x >= 0.0 && aoRowGeometry(p, n, pix.x, own) > 0.0;
+  int r = aoWindow / 2;
+  int lo = max(0, pix.y - r), hi = min(aoScreen.y - 1, pix.y + r);
   vec4 sum = vec4(0.0);
   float wsum = 0.0;
-  for (int j = first; j <= last; ++j)
+  for (int j = lo / ds; j <= hi / ds; ++j)
   {
-    int y = min(j * aoDownsample, aoScreen.y - 1);
-    ivec2 tq = ivec2(pix.x, y) + aoGuard;
-    vec4 packedQ = aoPackedNormal(tq);
-    if (packedQ.w < 0.5) continue;  // background
-    vec3 q = aoViewPosition(tq);
     vec4 h = texelFetch(aoRows, ivec2(pix.x, j), 0);
-    float w = aoWendland(abs(float(y - pix.y)), float(aoWindow)) * aoWendland(length(q - p), aoPositionRadius);
-#if AO_NORMAL_KERNEL
-    w *= aoWendland(1.0 - dot(n, aoUnpackNormal(packedQ)), 2.0);
-#endif
+    if (h.x < 0.0) continue;  // no surface, or no contributor, in that row
+    float w = aoRowGeometry(p, n, pix.x, j);
+    if (w <= 0.0) continue;
+    float domain = aoDomainWeights[j * ds - pix.y + r + ds - 1];
+    if (j * ds + ds - 1 > aoScreen.y - 1)  // the last row reaches past the screen's edge
+    {
+      domain = 0.0;
+      for (int qy = max(lo, j * ds); qy <= min(hi, j * ds + ds - 1); ++qy)
+        domain += aoWendland(float(abs(qy - pix.y)), float(aoWindow));
+    }
+    w *= domain;
 #if AO_RANGE_KERNEL
-    w *= aoWendland(abs(AO_SCALAR(h) - AO_SCALAR(hc)), aoRange);
+    if (useAO) w *= aoWendland(abs(AO_SCALAR(h) - AO_SCALAR(hc)), aoRange);
 #endif
     sum += w * h;
     wsum += w;
   }
-  return AO_PICK(wsum > 0.0 ? sum / wsum : hc);
+  return AO_PICK(wsum > 0.0 ? sum / wsum : vec4(0.0));
 #endif
 }
 
@@ -126,6 +153,8 @@ void main()
   col = vec4(covered ? aoPackedNormal(g).xyz : vec3(0.0), 1.0);  // packed n * 0.5 + 0.5
 #elif AO_DEBUG_VIEW == 3
   col = vec4(vec3(covered ? exp(p.z / (8.0 * aoRadius)) : 0.0), 1.0);
+#elif AO_DEBUG_VIEW == 4
+  col = vec4(vec3(texelFetch(aoResult, min(pix / aoDownsample, textureSize(aoResult, 0) - 1), 0).r), 1.0);
 #else
   col.rgb *= vec3(1.0) - vec3(ao);
 #endif

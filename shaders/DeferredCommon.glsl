@@ -2,7 +2,8 @@
 // substituted for the "//AOKIT::DeferredCommon" line of a stage. Screen pixel p is G-buffer texel
 // p + aoGuard (the G-buffer may hold a guard band around the screen). An AO target at 1/ds of the
 // screen resolution has one texel per ds x ds block; texel c stands for screen pixel
-// min(c * ds, screen - 1), whose G-buffer values it is computed from and compared against.
+// min(c * ds + (ds - 1) / 2, screen - 1) (the block's corner at ds 1 and 2, the pixel nearest its
+// centre at 4), whose G-buffer values it is computed from and compared against.
 uniform sampler2D aoDepth;    // window depth, guard band included
 uniform sampler2D aoNormal;   // view-space unit normal as n * 0.5 + 0.5, a = 1 where covered
 uniform sampler2D aoColor;    // lit colour
@@ -47,5 +48,6 @@ vec3 aoUnpackNormal(vec4 pn) { return normalize(pn.xyz * 2.0 - 1.0); }
 
 int aoFlags(ivec2 t) { return int(texelFetch(aoFlagsTex, t, 0).r * 255.0 + 0.5); }
 
-// The G-buffer texel that AO-target texel `cell` stands for, at downsampling ds.
-ivec2 aoCellTexel(ivec2 cell, int ds) { return min(cell * ds, aoScreen - 1) + aoGuard; }
+// The screen pixel, and the G-buffer texel, that AO-target texel `cell` stands for at downsampling ds.
+ivec2 aoCellPixel(ivec2 cell, int ds) { return min(cell * ds + (ds - 1) / 2, aoScreen - 1); }
+ivec2 aoCellTexel(ivec2 cell, int ds) { return aoCellPixel(cell, ds) + aoGuard; }

@@ -48,7 +48,7 @@ TEST(HybridHash, AvalancheAndUniformity) {
 TEST(HybridJitter, KeyedByWorldCellAndNormalOnly) {
   const float invCell = 1.0f / 0.01f;
   const glm::vec3 n(0.0f, 0.6f, 0.8f);
-  const glm::vec3 p(1.2345f, -0.5432f, 0.1111f);  // inside cell (123, -55, 11)
+  const glm::vec3 p(1.23f, -0.54f, 0.11f);  // the middle of cell (123, -54, 11)
   const std::uint32_t key = hybridJitterKey(p, n, invCell, 0);
   // Anywhere in the same cell with a normal in the same quantum: the same key (the pattern sticks
   // to the surface whatever the camera does).
@@ -67,8 +67,19 @@ TEST(HybridJitter, KeyedByWorldCellAndNormalOnly) {
   EXPECT_NE(j.x, j.y);
   // Neighbouring cells give independent-looking jitters: their mean over a row of cells is 1/2.
   double mean = 0.0;
-  for (int c = 0; c < 4000; ++c) mean += hybridJitter(hybridJitterKey(glm::vec3(c * 0.01f + 0.005f, 0, 0), n, invCell, 0)).x;
+  for (int c = 0; c < 4000; ++c) mean += hybridJitter(hybridJitterKey(glm::vec3(c * 0.01f, 0, 0), n, invCell, 0)).x;
   EXPECT_NEAR(mean / 4000, 0.5, 0.02);
+}
+
+// Round values lie mid-cell and axis-aligned normals mid-quantum: the round-off of a position
+// reconstructed from depth (a floor at z = +-1e-7) or of a packed 10-bit normal (components of
+// +-1e-3 where 0 is meant), which changes with the view, leaves the key alone.
+TEST(HybridJitter, RoundOffAtRoundValuesKeepsTheKey) {
+  const float invCell = 1.0f / 0.0078125f;
+  const std::uint32_t key = hybridJitterKey(glm::vec3(0.5f, -0.25f, 0.0f), glm::vec3(0, 0, 1), invCell, 3);
+  for (float dz : {-1e-7f, 1e-7f, -1e-5f, 1e-5f})
+    for (const glm::vec3& n : {glm::vec3(1e-3f, -1e-3f, 1.0f), glm::vec3(-1e-3f, 1e-3f, 1.0f)})
+      EXPECT_EQ(hybridJitterKey(glm::vec3(0.5f + dz, -0.25f - dz, dz), glm::normalize(n), invCell, 3), key) << dz;
 }
 
 TEST(HybridBasis, OrthonormalRightHandedEverywhere) {

@@ -22,8 +22,7 @@ std::string fmt(const char* f, double v) {
 void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows,
                       const std::vector<ReferenceSummary>& refs, const std::string& chartFile,
                       const std::vector<SequenceRow>& sequence) {
-  writeAtomically(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp);
+  writeStreamAtomically(path, [&](std::ostream& out) {
     out << "# aokit bench\n\n"
         << "Each row is compared with the Embree reference of the quantity it estimates (occlusion, or 1 - W for "
            "ambient transfer, with the falloff it used) on the pixels the rasterizer covered. Times: each row is "
@@ -78,7 +77,6 @@ void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows
             << fmt("%.4f", r.temporalChange) << " | " << fmt("%.4f", r.refTemporalChange) << " | "
             << fmt("%.4f", r.meanRmse) << " | " << r.matchedPixels << " |\n";
     }
-    if (!out) throw std::runtime_error(path + ": cannot write");
   });
 }
 

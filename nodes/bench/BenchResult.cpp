@@ -52,11 +52,9 @@ std::string header() {
 }  // namespace
 
 void writeBenchCsv(const std::string& path, const std::vector<BenchRow>& rows) {
-  writeAtomically(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp);
+  writeStreamAtomically(path, [&](std::ostream& out) {
     out << header() << "\n";
     for (const auto& r : rows) out << benchCsvLine(r) << "\n";
-    if (!out) throw std::runtime_error(path + ": cannot write");
   });
 }
 

@@ -118,8 +118,7 @@ std::vector<SequenceRow> runSequenceBench(const SequenceConfig& cfg) {
 }
 
 void writeSequenceCsv(const std::string& path, const std::vector<SequenceRow>& rows) {
-  writeAtomically(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp);
+  writeStreamAtomically(path, [&](std::ostream& out) {
     out << "scene,method,setting,camera,frames,temporal_change,ref_temporal_change,mean_rmse,matched_pixels\n";
     char buf[256];
     for (const auto& r : rows) {
@@ -128,7 +127,6 @@ void writeSequenceCsv(const std::string& path, const std::vector<SequenceRow>& r
                     r.matchedPixels);
       out << buf;
     }
-    if (!out) throw std::runtime_error(path + ": cannot write");
   });
 }
 

@@ -1,5 +1,6 @@
 #include "render/DeferredAOPass.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -43,8 +44,10 @@ void validate(const DeferredConfig& c) {
   if (c.downsample != 1 && c.downsample != 2 && c.downsample != 4)
     throw std::invalid_argument("deferred AO: downsample must be 1, 2 or 4");
   if (c.aoChannels != 1 && c.aoChannels != 4) throw std::invalid_argument("deferred AO: AO channels must be 1 or 4");
-  if (c.upsample.window != 0 && (c.upsample.window < 2 || c.upsample.window > 32))
-    throw std::invalid_argument("deferred AO: upsampling window must be 0 or 2..32 pixels");
+  if (c.upsample.window < 0 || c.upsample.window > 64)
+    throw std::invalid_argument("deferred AO: upsampling window must be 0..64 pixels");
+  if (!(c.upsample.normalSupport > 0.0 && c.upsample.normalSupport <= 2.0))
+    throw std::invalid_argument("deferred AO: normal support must be in (0, 2]");
   if (!(c.upsample.depthTolerance > 0.0 && c.upsample.depthTolerance <= 1.0))
     throw std::invalid_argument("deferred AO: depth tolerance must be in (0, 1]");
   if (!(c.radius > 0.0) || !std::isfinite(c.radius)) throw std::invalid_argument("deferred AO: radius must be positive");
@@ -69,6 +72,26 @@ class ActiveTextures {
  private:
   std::vector<vtkTextureObject*> active_;
 };
+
+// The separable upsampler's domain weights per tap: entry o + r + ds - 1 holds the sum of
+// w(|o + t|, m) over t = 0..ds-1 with |o + t| <= r = m / 2, the weight of a texel whose first
+// pixel lies o pixels from the filtered one (DeferredUpsampleFS.glsl). Wendland as the shaders
+// write it.
+std::vector<float> domainWeights(int m, int ds) {
+  auto wendland = [](float t, float h) {
+    const float q = std::clamp(t / h, 0.0f, 1.0f), a = 1.0f - q;
+    return a * a * a * a * (4.0f * q + 1.0f);
+  };
+  const int r = m / 2;
+  std::vector<float> out(static_cast<std::size_t>(2 * r + ds), 0.0f);
+  for (int o = -r - ds + 1; o <= r; ++o) {
+    float sum = 0.0f;
+    for (int t = 0; t < ds; ++t)
+      if (std::abs(o + t) <= r) sum += wendland(static_cast<float>(std::abs(o + t)), static_cast<float>(m));
+    out[static_cast<std::size_t>(o + r + ds - 1)] = sum;
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -134,17 +157,21 @@ void DeferredAOPass::AllocateTargets(vtkOpenGLRenderWindow* renWin) {
     AllocatedChannels = Frame.config.aoChannels;
     AOTarget = makeTexture2D(renWin, format, w, h);
     ZTarget = makeTexture2D(renWin, TexFormat::R32F, w, h);
-    RowTarget = nullptr;
+    RowTarget = RowGuide = nullptr;
   } else if (w != Frame.targetWidth || h != Frame.targetHeight) {
     AOTarget->Resize(w, h);
     ZTarget->Resize(w, h);
   }
   if (Frame.config.upsample.window > 0) {
-    if (!RowTarget) RowTarget = makeTexture2D(renWin, format, Frame.screenWidth, h);
-    else if (static_cast<int>(RowTarget->GetWidth()) != Frame.screenWidth || static_cast<int>(RowTarget->GetHeight()) != h)
+    if (!RowTarget) {
+      RowTarget = makeTexture2D(renWin, format, Frame.screenWidth, h);
+      RowGuide = makeTexture2D(renWin, TexFormat::RGBA32F, Frame.screenWidth, h);
+    } else if (static_cast<int>(RowTarget->GetWidth()) != Frame.screenWidth || static_cast<int>(RowTarget->GetHeight()) != h) {
       RowTarget->Resize(Frame.screenWidth, h);
+      RowGuide->Resize(Frame.screenWidth, h);
+    }
   } else {
-    RowTarget = nullptr;
+    RowTarget = RowGuide = nullptr;
   }
   Frame.targetWidth = w;
   Frame.targetHeight = h;
@@ -249,16 +276,18 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
 bool DeferredAOPass::RenderUpsample(vtkTextureObject* ao) {
   vtkShaderProgram* p = UpsampleStage->ready(Frame.renWin, CombineDefines(false));
   if (!p) return false;
-  ActiveTextures inputs{ao, ZTarget};
+  ActiveTextures inputs{ao};
   Frame.bindCommon(p);
   p->SetUniformi("aoResult", ao->GetTextureUnit());
-  p->SetUniformi("aoResultZ", ZTarget->GetTextureUnit());
   p->SetUniformi("aoDownsample", Frame.config.downsample);
   p->SetUniformi("aoWindow", Frame.config.upsample.window);
   const double radius = Frame.config.upsample.positionRadius > 0.0 ? Frame.config.upsample.positionRadius : Frame.config.radius;
   p->SetUniformf("aoPositionRadius", static_cast<float>(radius));
+  p->SetUniformf("aoNormalSupport", static_cast<float>(Frame.config.upsample.normalSupport));
   p->SetUniformf("aoRange", static_cast<float>(Frame.config.upsample.aoRange));
-  UpsampleStage->renderInto(Framebuffer, {RowTarget});
+  const std::vector<float> domain = domainWeights(Frame.config.upsample.window, Frame.config.downsample);
+  p->SetUniform1fv("aoDomainWeights", static_cast<int>(domain.size()), domain.data());
+  UpsampleStage->renderInto(Framebuffer, {RowTarget, RowGuide});
   return true;
 }
 
@@ -266,19 +295,25 @@ template <class Draw>
 bool DeferredAOPass::Combine(FullScreenStage& stage, bool outputAO, Draw&& draw) {
   vtkShaderProgram* p = stage.ready(Frame.renWin, CombineDefines(outputAO));
   if (!p) return false;
-  ActiveTextures inputs{Result, ZTarget, RowTarget.Get(), GBuffer->GetBakedAOTexture()};
+  ActiveTextures inputs{Result, ZTarget, RowTarget.Get(), RowGuide.Get(), GBuffer->GetBakedAOTexture()};
   Frame.bindCommon(p);
   p->SetUniformi("aoResult", Result->GetTextureUnit());
   p->SetUniformi("aoResultZ", ZTarget->GetTextureUnit());
   if (RowTarget) p->SetUniformi("aoRows", RowTarget->GetTextureUnit());
   if (Frame.config.bakedAO) p->SetUniformi("aoBaked", GBuffer->GetBakedAOTexture()->GetTextureUnit());
+  if (RowGuide) p->SetUniformi("aoRowGuide", RowGuide->GetTextureUnit());
   p->SetUniformi("aoDownsample", Frame.config.downsample);
   p->SetUniformf("aoTolerance", static_cast<float>(Frame.config.upsample.depthTolerance));
   p->SetUniformf("aoRadius", static_cast<float>(Frame.config.radius));
   p->SetUniformi("aoWindow", Frame.config.upsample.window);
   const double radius = Frame.config.upsample.positionRadius > 0.0 ? Frame.config.upsample.positionRadius : Frame.config.radius;
   p->SetUniformf("aoPositionRadius", static_cast<float>(radius));
+  p->SetUniformf("aoNormalSupport", static_cast<float>(Frame.config.upsample.normalSupport));
   p->SetUniformf("aoRange", static_cast<float>(Frame.config.upsample.aoRange));
+  if (Frame.config.upsample.window > 0) {
+    const std::vector<float> domain = domainWeights(Frame.config.upsample.window, Frame.config.downsample);
+    p->SetUniform1fv("aoDomainWeights", static_cast<int>(domain.size()), domain.data());
+  }
   draw();
   return true;
 }
@@ -328,6 +363,7 @@ bool DeferredAOPass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& a
 
 std::size_t DeferredAOPass::MemoryBytes() const {
   return GBuffer->MemoryBytes() + textureBytes(AOTarget) + textureBytes(ZTarget) + textureBytes(RowTarget) +
+         textureBytes(RowGuide) +
          FamilyMemoryBytes();
 }
 
@@ -342,7 +378,7 @@ void DeferredAOPass::ReleaseGraphicsResources(vtkWindow* w) {
     renWin->MakeCurrent();
     Timer.release();
   }
-  AOTarget = ZTarget = RowTarget = nullptr;
+  AOTarget = ZTarget = RowTarget = RowGuide = nullptr;
   Result = nullptr;
   Framebuffer = nullptr;
   AllocatedChannels = 0;

@@ -10,7 +10,8 @@
 //      its depth is not within a tolerance of the pixel's (one pass, inside the combine), or a
 //      separable joint bilateral filter over an m x m window (Reinbothe et al., Hybrid AO,
 //      eqs. 5-8: Wendland domain kernel; position, normal and AO range kernels): a horizontal
-//      pass to a (screen width x target height) target, the vertical taps inside the combine.
+//      pass to a (screen width x target height) target, the vertical taps inside the combine;
+//      exactly voxel/BilateralUpsample.h's contract, whose CPU version is its oracle.
 //   4. combine: colour * (1 - AO) where the prop receives AO, depth written back; or the AO alone
 //      (ReadAO), or a debug view. With baked AO on, each pixel's per-vertex baked AO (G-buffer) is
 //      combined first: AO = 1 - (1 - baked)(1 - AO).
@@ -124,7 +125,10 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   StageTimer Timer;
   DeferredFrame Frame;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  vtkSmartPointer<vtkTextureObject> AOTarget, ZTarget, RowTarget;  // RowTarget: separable upsampling
+  // Separable upsampling: the horizontal pass's AO (RowTarget) and the guide of its rows
+  // (RowGuide: view normal and z of the pixel each row texel stands for), so that the vertical
+  // pass reads one texel per tap for its range weights, not the G-buffer's normal and depth.
+  vtkSmartPointer<vtkTextureObject> AOTarget, ZTarget, RowTarget, RowGuide;
   vtkTextureObject* Result = nullptr;                              // the family's final AO
   int AllocatedChannels = 0;
   std::unique_ptr<FullScreenStage> UpsampleStage, CombineStage, AOOutputStage;

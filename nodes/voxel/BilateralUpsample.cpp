@@ -38,6 +38,22 @@ SurfaceSamples lowResolutionSamples(const SurfaceSamples& full, int k) {
   return low;
 }
 
+SurfaceSamples rowSamples(const SurfaceSamples& full, int k) {
+  if (k < 1) throw std::invalid_argument("bilateral: scale must be >= 1");
+  full.validate();
+  SurfaceSamples rows;
+  rows.resize(full.width, (full.height + k - 1) / k);
+  for (int j = 0; j < rows.height; ++j)
+    for (int x = 0; x < full.width; ++x) {
+      const std::size_t src = full.index(x, std::min(k * j + (k - 1) / 2, full.height - 1));
+      const std::size_t dst = rows.index(x, j);
+      rows.position[dst] = full.position[src];
+      rows.normal[dst] = full.normal[src];
+      rows.covered[dst] = full.covered[src];
+    }
+  return rows;
+}
+
 namespace {
 
 void checkParams(const BilateralParams& p) {
@@ -60,8 +76,9 @@ void checkSizes(const AOBuffer& ao, const SurfaceSamples& g, int w, int h, const
                                 std::to_string(g.height));
 }
 
-// One pass along x or y. `src` (with guide `srcG`) is read at texel y / k.
-AOBuffer pass(const AOBuffer& src, const SurfaceSamples& srcG, int k, const SurfaceSamples& g,
+// One pass along x or y over the output guide `g`; output (x, y) reads `src` (guide `srcG`) at
+// (x / kx, y / ky), and its window's pixels q at (q.x / kx, q.y / ky).
+AOBuffer pass(const AOBuffer& src, const SurfaceSamples& srcG, int kx, int ky, const SurfaceSamples& g,
               const BilateralParams& p, bool horizontal) {
   AOBuffer out;
   out.resize(g.width, g.height);
@@ -75,13 +92,15 @@ AOBuffer pass(const AOBuffer& src, const SurfaceSamples& srcG, int k, const Surf
         return bilateralNormalWeight(nx, srcG.normal[t], p.normalSupport) *
                bilateralPositionWeight(px, srcG.position[t], p.positionSupport);
       };
-      const std::size_t own = src.index(x / k, y / k);
+      const std::size_t own = src.index(x / kx, y / ky);
       const bool useAO = src.covered[own] && rangeGeometry(own) > 0.0f;
       float sum = 0.0f, weights = 0.0f;
       for (int d = -r; d <= r; ++d) {
+        // The window's full-resolution pixels, cut at the image's border (the output guide is full
+        // resolution along the pass).
         const int qx = horizontal ? x + d : x, qy = horizontal ? y : y + d;
         if (qx < 0 || qy < 0 || qx >= g.width || qy >= g.height) continue;
-        const std::size_t t = src.index(qx / k, qy / k);
+        const std::size_t t = src.index(qx / kx, qy / ky);
         if (!src.covered[t]) continue;
         float w = bilateralDomainWeight(static_cast<float>(std::abs(d)), p.filterSize) * rangeGeometry(t);
         if (useAO) w *= bilateralAOWeight(src.ao[own], src.ao[t], p.aoSupport);
@@ -104,8 +123,9 @@ AOBuffer jointBilateralUpsample(const AOBuffer& lowAO, const SurfaceSamples& low
   fullG.validate();
   checkSizes(lowAO, lowG, (fullG.width + p.scale - 1) / p.scale, (fullG.height + p.scale - 1) / p.scale,
              "the low-resolution AO map and its G-buffer");
-  const AOBuffer horizontal = pass(lowAO, lowG, p.scale, fullG, p, true);
-  return pass(horizontal, fullG, 1, fullG, p, false);
+  const SurfaceSamples rowG = rowSamples(fullG, p.scale);
+  const AOBuffer rows = pass(lowAO, lowG, p.scale, 1, rowG, p, true);
+  return pass(rows, rowG, 1, p.scale, fullG, p, false);
 }
 
 }  // namespace aokit

@@ -16,8 +16,13 @@
 // edges that cut a low-resolution texel, where the seed's form takes the AO of the texel's other
 // side at full weight. w_h is left out (1) when x's own texel fails the normal or position test
 // (its value belongs to another surface).
-// Separable (eq. 8): the horizontal pass reads h' and writes a full-resolution map; the vertical
-// pass filters that map with the full-resolution guide on both sides and w_h on its values.
+// Separable (eq. 8), at the low resolution across the pass: the horizontal pass filters each row
+// of the low-resolution map at full horizontal resolution, for the pixels of the rows the map's
+// texels stand for (rowSamples: W x ceil(H/k), row j = pixel row k j + (k - 1) / 2); the vertical
+// pass filters those rows for every full-resolution pixel, reading row qy / k for window pixel qy,
+// with the row's guide on the far side. In both passes the range weights depend only on the
+// texel or row a window pixel reads, so a GPU sums them per texel (O(m / k) reads per pixel)
+// with the domain weights of that texel's pixels added up: the same sum, in another order.
 // Uncovered pixels and texels do not contribute; a pixel with no contributor stays uncovered.
 #include "reference/SurfaceSamples.h"
 
@@ -39,6 +44,9 @@ float bilateralAOWeight(float ax, float ay, float support);
 // The low-resolution G-buffer this reference assumes: texel (i, j) is full-resolution pixel
 // (min(k i + (k - 1) / 2, W - 1), min(k j + (k - 1) / 2, H - 1)).
 SurfaceSamples lowResolutionSamples(const SurfaceSamples& fullRes, int scale);
+
+// The guide of the horizontal pass's output: pixel (x, min(k j + (k - 1) / 2, H - 1)) for row j.
+SurfaceSamples rowSamples(const SurfaceSamples& fullRes, int scale);
 
 // The separable joint bilateral upsampling of `lowAO` (computed on `lowG`, both ceil(W/k) x
 // ceil(H/k)) to the size of `fullG` (W x H). Throws std::invalid_argument on bad parameters or

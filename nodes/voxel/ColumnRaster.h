@@ -12,6 +12,17 @@
 
 namespace aokit {
 
+// The edge function of p -> q at (x, y): (q - p) x ((x, y) - p), evaluated from the endpoint that
+// comes first in (x, y) order and negated if that is q, so that the two triangles sharing an edge
+// get exactly opposite values and a centre near the edge is counted once, even after round-off.
+inline double columnEdgeFunction(const glm::dvec3& p, const glm::dvec3& q, double x, double y) {
+  const bool swap = q.x < p.x || (q.x == p.x && q.y < p.y);
+  const glm::dvec3& a = swap ? q : p;
+  const glm::dvec3& b = swap ? p : q;
+  const double w = (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x);
+  return swap ? -w : w;
+}
+
 // visit(i, j, z) for every covered column of a dims.x x dims.y grid, z the triangle's depth there.
 // Triangles with no area in xy (parallel to z) cover nothing.
 template <typename Visit>
@@ -38,13 +49,13 @@ void rasterizeColumnCentres(const glm::ivec3& dims, glm::dvec3 a, glm::dvec3 b, 
       double w[3];  // edge e's function, weight of the vertex opposite to it
       bool inside = true;
       for (int e = 0; e < 3 && inside; ++e) {
-        const glm::dvec3 &p = v[e], &q = v[(e + 1) % 3];
-        w[e] = (q.x - p.x) * (y - p.y) - (q.y - p.y) * (x - p.x);
+        w[e] = columnEdgeFunction(v[e], v[(e + 1) % 3], x, y);
         inside = w[e] > 0.0 || (w[e] == 0.0 && owns[e]);
       }
       if (!inside) continue;
-      // Edge e (v[e] -> v[e+1]) weighs the vertex v[e+2].
-      const double z = (w[1] * v[0].z + w[2] * v[1].z + w[0] * v[2].z) / area;
+      // Edge e (v[e] -> v[e+1]) weighs the vertex v[e+2]; relative to v[0], so a triangle of
+      // constant depth gives exactly that depth.
+      const double z = v[0].z + (w[2] * (v[1].z - v[0].z) + w[0] * (v[2].z - v[0].z)) / area;
       visit(i, j, z);
     }
 }

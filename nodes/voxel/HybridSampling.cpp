@@ -14,10 +14,15 @@ float fract(float x) { return x - std::floor(x); }
 
 std::uint32_t hybridJitterKey(const glm::vec3& p, const glm::vec3& n, float invCell, std::uint32_t seed) {
   // Clamped to +-2^30 cells before the int conversion (undefined beyond the int range).
-  auto cellOf = [&](float x) { return static_cast<int>(std::clamp(std::floor(x * invCell), -1073741824.0f, 1073741824.0f)); };
+  // Cells and normal quanta centred on round values (see the header): +0.5 before floor.
+  auto cellOf = [&](float x) {
+    return static_cast<int>(std::clamp(std::floor(x * invCell + 0.5f), -1073741824.0f, 1073741824.0f));
+  };
   const glm::ivec3 cell(cellOf(p.x), cellOf(p.y), cellOf(p.z));
-  auto quant = [](float c) { return static_cast<std::uint32_t>(std::clamp(std::floor((c + 1.0f) * 4.0f), 0.0f, 7.0f)); };
-  const std::uint32_t q = quant(n.x) | (quant(n.y) << 3) | (quant(n.z) << 6);
+  auto quant = [](float c) {
+    return static_cast<std::uint32_t>(std::clamp(std::floor((c + 1.0f) * 4.0f + 0.5f), 0.0f, 8.0f));
+  };
+  const std::uint32_t q = quant(n.x) | (quant(n.y) << 4) | (quant(n.z) << 8);
   std::uint32_t key = hybridHash(seed ^ q);
   key = hybridHash(key ^ static_cast<std::uint32_t>(cell.x));
   key = hybridHash(key ^ static_cast<std::uint32_t>(cell.y));

@@ -18,10 +18,13 @@
 //
 // Jitter: an object-space white noise, keyed by the world position's cell and the quantized normal,
 // so the pattern sticks to surfaces when the camera moves (the seed's tiled 3D noise texture):
-//     cell  = ivec3(clamp(floor(p * invCell), -2^30, 2^30))      (float multiply, then floor)
-//     q     = uvec3(clamp(floor((n + 1) * 4), 0, 7))            3 bits per normal component
-//     key   = H(H(H(H(seed ^ (q.x | q.y << 3 | q.z << 6)) ^ uint(cell.x)) ^ uint(cell.y)) ^ uint(cell.z))
+//     cell  = ivec3(clamp(floor(p * invCell + 0.5), -2^30, 2^30))  (float multiply-add, then floor)
+//     q     = uvec3(clamp(floor((n + 1) * 4 + 0.5), 0, 8))         4 bits per normal component
+//     key   = H(H(H(H(seed ^ (q.x | q.y << 4 | q.z << 8)) ^ uint(cell.x)) ^ uint(cell.y)) ^ uint(cell.z))
 //     du = U(key), dphi = U(H(key)), dt = U(H(H(key)))
+// Cells and quanta are centred on round values (the + 0.5): a floor at z = 0 lies mid-cell, and
+// axis-aligned normals (components 0 and +-1) mid-quantum, so the round-off of a reconstructed
+// position or a packed normal (which changes with the view) does not flip the key.
 // with H = hybridHash and U = hashToUnit below.
 #include <cstdint>
 

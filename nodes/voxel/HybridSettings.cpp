@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace aokit {
 
@@ -30,7 +31,7 @@ void validate(const HybridSettings& s) {
   if (needMiB > s.memoryBudgetMiB) {
     std::ostringstream msg;
     msg << "hybrid: a " << s.gridResolution << "^3 grid needs " << needMiB << " MiB, over the memory budget of "
-        << s.memoryBudgetMiB << " MiB (raise memoryBudgetMiB or lower gridResolution)";
+        << s.memoryBudgetMiB << " MiB (raise the budget, or lower the resolution)";
     throw std::invalid_argument(msg.str());
   }
   if (s.frame != VoxelizingFrame::ThreeAxis && s.frame != VoxelizingFrame::Rotated &&
@@ -59,6 +60,9 @@ void validate(const HybridSettings& s) {
   if (!inOpenClosed(s.positionSupport, 0.0, 4.0))
     fail("positionSupport", "in (0, 4] (units of R)", s.positionSupport);
   if (!inOpenClosed(s.aoSupport, 0.0, 1.0)) fail("aoSupport", "in (0, 1]", s.aoSupport);
+  if (s.view != HybridView::None && s.view != HybridView::AO && s.view != HybridView::Normals &&
+      s.view != HybridView::Depth && s.view != HybridView::Voxels)
+    fail("view", "none, ao, normals, depth or voxels", static_cast<int>(s.view));
 }
 
 }  // namespace aokit

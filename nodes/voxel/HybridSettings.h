@@ -23,6 +23,11 @@ enum class VoxelizingFrame {
                  // column centre: thin like the seed's, nothing lost (needs image atomics too)
 };
 
+// Debug views of the GPU pass (HybridPass): the lit frame with AO (None), AO only, normals,
+// depth, or the voxel grid seen from the camera (a ray cast through the grid, faces shaded by
+// their axis).
+enum class HybridView { None, AO, Normals, Depth, Voxels };
+
 enum class RegionMode {
   Auto,  // bounds of the casters within R of the view frustum, clipped to regionBudget
   Box,   // the fixed world box `regionBox`
@@ -71,6 +76,8 @@ struct HybridSettings {
                                     //!<   90 degrees no weight (the seed's 2 still gives them 0.19)
   double positionSupport = 1.0;     //!< h of w_p over |p(x) - p(y)|, in units of R, (0, 4] (seed: 1)
   double aoSupport = 1.0;           //!< h of w_h over |h'(x) - h'(y)|, AO units, (0, 1] (seed: 1)
+
+  HybridView view = HybridView::None;  //!< GPU pass only: what the frame shows
 };
 
 // Bytes of a bit-packed grid of nx x ny x nz voxels (VoxelGrid.h): nx ny ceil(nz / 128) 16.

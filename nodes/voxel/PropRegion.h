@@ -1,0 +1,66 @@
+#pragma once
+// The region of interest of one frame of a VTK renderer (issue 9 items 2 and 3): the caster props
+// (render/ActorKeys.h casterProps: plain VTK props count as casters) that show vtkPolyData, their
+// world bounds, the view frustum of the active camera, and computeVoxelRegion (VoxelRegion.h) over
+// them: the same function, on the same numbers, as the CPU oracle computeHybridAOCpu, which takes
+// them from the scene graph. A parallel camera has no frustum: its region is the casters within R
+// of its view box, cut to regionBudget R around the focal point.
+// RegionCache keeps the last region and recomputes it only when its inputs changed (camera,
+// aspect, any caster's bounds, R; its owner clears it when the settings change): techniques live
+// across frames.
+#include <vector>
+
+#include "core/Bounds.h"
+#include "core/Camera.h"
+#include "voxel/HybridSettings.h"
+#include "voxel/VoxelRegion.h"
+
+class vtkPolyData;
+class vtkProp;
+class vtkRenderer;
+
+namespace aokit {
+
+struct FrameCasters {
+  std::vector<vtkProp*> props;      // visible casters that show polydata
+  std::vector<vtkPolyData*> polys;  // theirs (pipelines brought up to date)
+  std::vector<Bounds> bounds;       // their world bounds
+};
+
+FrameCasters gatherCasters(vtkRenderer* renderer);
+
+// The renderer's view as the region needs it.
+struct FrameView {
+  Camera camera;                // position, focal point, view up, vertical view angle
+  bool parallel = false;
+  double parallelScale = 1.0;   // half the view's height, world units (parallel only)
+  double aspect = 1.0;          // width / height of the renderer's viewport
+  Bounds scene;                 // bounds of every visible prop (the frustum's depth)
+  bool operator==(const FrameView& o) const;
+};
+
+FrameView frameView(vtkRenderer* renderer);
+
+// The region (settings validated first; std::invalid_argument on bad ones).
+VoxelRegion computePropRegion(const FrameView& view, const std::vector<Bounds>& casterBounds, double R,
+                              const HybridSettings& settings);
+
+class RegionCache {
+ public:
+  // The region for these inputs; recomputed only when they differ from the last call's (the
+  // settings are not compared: clear() when they change).
+  const VoxelRegion& get(const FrameView& view, const std::vector<Bounds>& casterBounds, double R,
+                         const HybridSettings& settings);
+  int recomputed() const { return recomputed_; }  // how many times get() recomputed (tests)
+  void clear() { valid_ = false; }
+
+ private:
+  bool valid_ = false;
+  FrameView view_;
+  std::vector<Bounds> bounds_;
+  double radius_ = 0.0;
+  VoxelRegion region_;
+  int recomputed_ = 0;
+};
+
+}  // namespace aokit

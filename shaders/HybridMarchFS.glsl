@@ -1,0 +1,187 @@
+//VTK::System::Dec
+#extension GL_ARB_shader_bit_encoding : require
+// HybridPass, march stage (seed 004, section 6, eq. 4): for each AO-map texel, the surface point
+// of the pixel it stands for (aoCellTexel) is ray-marched through the bit-packed voxel grid, step
+// for step as the CPU oracle (nodes/voxel/HybridMarch.cpp, HybridSampling.cpp; the contract in
+// nodes/voxel/README.md): object-space jitter keyed by the world position's cell and the quantized
+// normal, HAO_RAYS rays of a uniform cone pattern around the normal, HAO_STEPS steps over R with a
+// per-ray offset, each step testing the voxels between it and the previous step in its column
+// (HAO_SPAN_TEST) or its own voxel; the first hit weighs k(d) of the falloff; A = sum k cos /
+// sum cos. Integer parts (hash, key, voxel addresses) are bit-exact with the CPU's.
+// Out 0: occlusion in .r. Out 1: the view z of the texel's pixel (+1 on background).
+// Rays haoFirstRay..haoRayEnd - 1 only: llvmpipe ends an invocation's loops after 65535 iterations
+// in all, so heavy settings run as several passes over parts of the rays, each adding
+// sum k cos / sum cos (the denominator over all rays) to the AO target (blending).
+//AOKIT::Defines
+//AOKIT::DeferredCommon
+uniform usampler2D haoGrid;   // R32UI, 4 nx x (ny slabs): texel (4 i + c, s ny + j)
+uniform int haoDimsV[3];     // grid dimensions (vtkShaderProgram sets no ivec3)
+#define haoDims ivec3(haoDimsV[0], haoDimsV[1], haoDimsV[2])
+uniform int haoEmpty;         // 1: no grid this frame (no caster near the view): AO 0
+uniform mat4 haoWorldToGrid;
+uniform float haoRadius;      // R, world units
+uniform float haoCosMax;      // cos of the cone's half-angle
+uniform float haoNormalOffset;  // world units
+uniform float haoInvCell;     // 1 / jitter cell, 1 / world units
+uniform int haoSeedBits;      // the jitter seed's bits
+#define haoSeed uint(haoSeedBits)
+uniform int haoDownsample;
+uniform ivec2 haoTargetSize;  // the AO target's size
+uniform int haoFirstRay;      // this pass's rays
+uniform int haoRayEnd;
+in vec2 texCoord;
+//VTK::Output::Dec
+
+uint haoHash(uint x)
+{
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+float haoUnit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
+
+uint haoJitterKey(vec3 p, vec3 n)
+{
+  ivec3 cell = ivec3(clamp(floor(p * haoInvCell + 0.5), vec3(-1073741824.0), vec3(1073741824.0)));
+  uvec3 q = uvec3(clamp(floor((n + 1.0) * 4.0 + 0.5), vec3(0.0), vec3(8.0)));
+  uint key = haoHash(haoSeed ^ (q.x | (q.y << 4) | (q.z << 8)));
+  key = haoHash(key ^ uint(cell.x));
+  key = haoHash(key ^ uint(cell.y));
+  key = haoHash(key ^ uint(cell.z));
+  return key;
+}
+
+// Frisvad's basis with Duff et al.'s sign (copysign: -0 counts as negative, as in C++).
+void haoBasis(vec3 n, out vec3 t, out vec3 b)
+{
+  float s = uintBitsToFloat((floatBitsToUint(n.z) & 0x80000000u) | 0x3f800000u);
+  float a = -1.0 / (s + n.z);
+  float c = n.x * n.y * a;
+  t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
+  b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+float haoFalloff(float d)
+{
+  if (!(d < haoRadius)) return 0.0;
+  float q = max(d, 0.0) / haoRadius;
+#if HAO_FALLOFF == 0
+  return 1.0;
+#elif HAO_FALLOFF == 1
+  float s = 1.0 - q;
+  return (s * s) * (s * s) * (4.0 * q + 1.0);
+#elif HAO_FALLOFF == 2
+  return 1.0 - sqrt(q);
+#else
+  float e3 = 0.049787068;
+  return (exp(-3.0 * q) - e3) / (1.0 - e3);
+#endif
+}
+
+ivec3 haoVoxel(vec3 g) { return ivec3(floor(clamp(g, vec3(-1.0), vec3(haoDims)))); }
+
+uint haoWord(int i, int j, int k) { return texelFetch(haoGrid, ivec2(4 * i + ((k >> 5) & 3), (k >> 7) * haoDims.y + j), 0).r; }
+
+// Any voxel k0..k1 (clamped) of column (i, j) set? Outside the grid reads as empty. Most steps
+// stay within one 32-bit word: one fetch, no loop.
+bool haoAnyInRun(int i, int j, int k0, int k1)
+{
+  if (i < 0 || j < 0 || i >= haoDims.x || j >= haoDims.y) return false;
+  k0 = max(k0, 0);
+  k1 = min(k1, haoDims.z - 1);
+  if (k0 > k1) return false;
+  if ((k0 >> 5) == (k1 >> 5))
+  {
+    int n = k1 - k0 + 1;
+    uint mask = (n == 32 ? 0xffffffffu : ((1u << uint(n)) - 1u)) << uint(k0 & 31);
+    return (haoWord(i, j, k0) & mask) != 0u;
+  }
+  for (int k = k0; k <= k1;)
+  {
+    int last = min(k1, k | 31);
+    int n = last - k + 1;
+    uint mask = (n == 32 ? 0xffffffffu : ((1u << uint(n)) - 1u)) << uint(k & 31);
+    if ((haoWord(i, j, k) & mask) != 0u) return true;
+    k = last + 1;
+  }
+  return false;
+}
+
+// Ray i of the pattern in the local frame (z along the normal).
+vec3 haoRayLocal(int i, vec2 jitter)
+{
+  float u = fract((float(i) + 0.5) / float(HAO_RAYS) + jitter.x);
+  float v = fract(float(i) * 0.618034) + jitter.y;
+  float cosT = 1.0 - u * (1.0 - haoCosMax);
+  float sinT = sqrt(max(0.0, 1.0 - cosT * cosT));
+  float phi = 6.28318530717958647692 * v;
+  return vec3(sinT * cos(phi), sinT * sin(phi), cosT);
+}
+
+float haoOcclusion(vec3 p, vec3 n)
+{
+  uint key = haoJitterKey(p, n);
+  uint h2 = haoHash(key), h3 = haoHash(h2);
+  vec3 jitter = vec3(haoUnit(key), haoUnit(h2), haoUnit(h3));
+  vec3 t, b;
+  haoBasis(n, t, b);
+  mat3 m3 = mat3(haoWorldToGrid);
+  vec3 origin = (haoWorldToGrid * vec4(p + haoNormalOffset * n, 1.0)).xyz;
+  float stepLength = haoRadius / float(HAO_STEPS);
+  int originK = haoVoxel(origin).z;
+  float sum = 0.0, weights = 0.0;
+  for (int i = haoFirstRay; i < haoRayEnd; ++i)
+  {
+    vec3 local = haoRayLocal(i, jitter.xy);
+    vec3 dir = m3 * (local.x * t + local.y * b + local.z * n);
+    float offset = fract(jitter.z + float(i) * 0.754878);
+    float k = 0.0;
+    int previousK = originK;
+    for (int j = 0; j < HAO_STEPS; ++j)
+    {
+      float dist = (float(j) + offset) * stepLength;
+      ivec3 g = haoVoxel(origin + dist * dir);
+#if HAO_SPAN_TEST
+      bool hit = haoAnyInRun(g.x, g.y, min(previousK, g.z), max(previousK, g.z));
+#else
+      bool hit = haoAnyInRun(g.x, g.y, g.z, g.z);
+#endif
+      if (hit)
+      {
+        k = haoFalloff(dist);
+        break;
+      }
+      previousK = g.z;
+    }
+    sum += k * local.z;
+    weights += local.z;
+  }
+  if (haoFirstRay != 0 || haoRayEnd != HAO_RAYS)
+  {
+    weights = 0.0;  // a part of the rays: the denominator is over all of them
+    for (int i = 0; i < HAO_RAYS; ++i) weights += haoRayLocal(i, jitter.xy).z;
+  }
+  return weights > 0.0 ? sum / weights : 0.0;
+}
+
+void main()
+{
+  ivec2 g = aoCellTexel(ivec2(texCoord * vec2(haoTargetSize)), haoDownsample);
+  vec4 packedN = aoPackedNormal(g);
+  if (packedN.w < 0.5)
+  {
+    gl_FragData[0] = vec4(0.0);
+    gl_FragData[1] = vec4(1.0);
+    return;
+  }
+  vec3 pv = aoViewPosition(g);
+  vec3 p = (aoViewToWorld * vec4(pv, 1.0)).xyz;
+  vec3 n = normalize(mat3(aoViewToWorld) * aoUnpackNormal(packedN));
+  float ao = haoEmpty != 0 ? 0.0 : haoOcclusion(p, n);
+  gl_FragData[0] = vec4(ao, 0.0, 0.0, 1.0);
+  gl_FragData[1] = vec4(pv.z, 0.0, 0.0, 1.0);
+}
