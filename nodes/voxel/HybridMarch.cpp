@@ -15,7 +15,8 @@ std::string HybridMarchConstants::defines() const {
   d << "#define HAO_RAYS " << rays << "\n"
     << "#define HAO_STEPS " << steps << "\n"
     << "#define HAO_FALLOFF " << static_cast<int>(falloff) << "\n"
-    << "#define HAO_SPAN_TEST " << int(spanTest) << "\n";
+    << "#define HAO_SPAN_TEST " << int(spanTest) << "\n"
+    << "#define HAO_STATIC " << int(staticDynamic) << "\n";
   return d.str();
 }
 
