@@ -14,8 +14,9 @@
 // sum k cos / sum cos (the denominator over all rays) to the AO target (blending).
 // HAO_STATIC (static plus dynamic, nodes/voxel/StaticDynamic.h): haoGrid holds the dynamic casters
 // and haoStaticGrid the static ones meeting the region; a static receiver (no AO_FLAG_DYNAMIC)
-// marches haoGrid alone, its static occlusion being baked, and nothing outside the grid (farther
-// than R from every dynamic caster); a dynamic receiver marches both, ORed word for word.
+// marches haoGrid alone, its static occlusion being baked, and nothing outside the zones (each a
+// dynamic caster's bounds grown by R and a margin: farther than R from every dynamic caster); a
+// dynamic receiver marches both grids, ORed word for word.
 //AOKIT::Defines
 //AOKIT::DeferredCommon
 uniform usampler2D haoGrid;   // R32UI, 4 nx x (ny slabs): texel (4 i + c, s ny + j)
@@ -36,6 +37,8 @@ uniform int haoRayEnd;
 #if HAO_STATIC
 uniform usampler2D haoStaticGrid;  // same layout and frame as haoGrid
 bool haoWithStatic = false;        // this pixel's receiver is dynamic
+uniform int haoZoneCount;
+uniform vec3 haoZoneMin[HAO_MAX_ZONES], haoZoneMax[HAO_MAX_ZONES];  // world boxes
 #endif
 in vec2 texCoord;
 //VTK::Output::Dec
@@ -103,13 +106,12 @@ uint haoWord(int i, int j, int k)
 }
 
 #if HAO_STATIC
-// A static receiver whose ray origin lies outside the grid (by more than the conservative
-// voxelization's one voxel and a margin) is farther than R from every dynamic caster: the grid
-// covers their bounds grown by R.
-bool haoBeyondDynamic(vec3 p, vec3 n)
+// A ray origin outside every zone is farther than R from every dynamic caster.
+bool haoNearDynamic(vec3 o)
 {
-  vec3 g = (haoWorldToGrid * vec4(p + haoNormalOffset * n, 1.0)).xyz;
-  return any(lessThan(g, vec3(-2.0))) || any(greaterThan(g, vec3(haoDims) + 2.0));
+  for (int z = 0; z < haoZoneCount; ++z)
+    if (all(greaterThanEqual(o, haoZoneMin[z])) && all(lessThanEqual(o, haoZoneMax[z]))) return true;
+  return false;
 }
 #endif
 
@@ -210,7 +212,7 @@ void main()
   vec3 n = normalize(mat3(aoViewToWorld) * aoUnpackNormal(packedN));
 #if HAO_STATIC
   haoWithStatic = (aoFlags(g) & AO_FLAG_DYNAMIC) != 0;
-  bool skip = !haoWithStatic && haoBeyondDynamic(p, n);
+  bool skip = !haoWithStatic && !haoNearDynamic(p + haoNormalOffset * n);
 #else
   bool skip = false;
 #endif

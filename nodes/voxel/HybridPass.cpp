@@ -153,6 +153,7 @@ void HybridPass::Voxelize(DeferredFrame& f) {
 void HybridPass::VoxelizeStaticDynamic(DeferredFrame& f, const FrameCasters& casters) {
   const StaticDynamicPlan& plan = Plans.get(frameView(f.renderer), casters.bounds, staticFlags(casters), Radius, Settings);
   Region = plan.region;
+  Zones = plan.zones;
   if (!plan.empty) {
     auto drawsOf = [&](const std::vector<std::size_t>& which) {
       std::vector<CasterDraw> draws;
@@ -190,6 +191,18 @@ void HybridPass::BindGrid(vtkShaderProgram* p, const DeferredFrame& f) {
     if (!statics) statics = EmptyGrid;
     statics->Activate();
     p->SetUniformi("haoStaticGrid", statics->GetTextureUnit());
+  }
+  if (StaticMode() && p->IsUniformUsed("haoZoneCount")) {
+    float lo[kMaxDynamicZones][3] = {}, hi[kMaxDynamicZones][3] = {};
+    const int count = HasGrid ? static_cast<int>(std::min<std::size_t>(Zones.size(), kMaxDynamicZones)) : 0;
+    for (int z = 0; z < count; ++z)
+      for (int a = 0; a < 3; ++a) {
+        lo[z][a] = static_cast<float>(Zones[z].min[a]);
+        hi[z][a] = static_cast<float>(Zones[z].max[a]);
+      }
+    p->SetUniformi("haoZoneCount", count);
+    p->SetUniform3fv("haoZoneMin", kMaxDynamicZones, lo);
+    p->SetUniform3fv("haoZoneMax", kMaxDynamicZones, hi);
   }
   const int dims[3] = {Constants.dims.x, Constants.dims.y, Constants.dims.z};
   p->SetUniform1iv("haoDimsV", 3, dims);
@@ -310,6 +323,7 @@ void HybridPass::ReleaseFamily(vtkWindow* w) {
   Plans.clear();
   HasGrid = false;
   Region = VoxelRegion{};
+  Zones.clear();
 }
 
 }  // namespace aokit

@@ -27,8 +27,9 @@
 // technique bakes in prepare(), plain VTK calls bakeStaticProps), the G-buffer carries it and the
 // combine applies it (DeferredConfig::bakedAO). The region is the dynamic casters' bounds grown by
 // R; the dynamic casters go into one grid, the static ones meeting the region into a second; a
-// static receiver (G-buffer flag AO_FLAG_DYNAMIC clear) marches the dynamic grid only, and none
-// at all outside the grid (its occlusion is all baked), a dynamic one marches both.
+// static receiver (G-buffer flag AO_FLAG_DYNAMIC clear) marches the dynamic grid only, and not at
+// all outside the zones of the dynamic casters (each one's bounds grown by R: its occlusion is
+// all baked there), a dynamic one marches both.
 //
 // Defaults (HybridSettings): grid 256 on the region's longest side, ThreeAxis, solid fill, 64 MiB
 // budget, 32 rays x 8 steps with span tests, normal offset 2 voxels, half resolution, m = 16.
@@ -67,6 +68,7 @@ class HybridPass : public DeferredAOPass {
   const HybridMarchConstants& GetConstants() const { return Constants; }
   std::size_t GetVoxelizedCasters() const { return VoxelizedCasters; }
   std::size_t GetVoxelizedStaticCasters() const { return VoxelizedStatic; }
+  const std::vector<Bounds>& GetDynamicZones() const { return Zones; }  // static mode
   int GetRegionComputations() const { return Regions.recomputed() + Plans.recomputed(); }
   std::size_t GetCasterUploads() const { return Buffers.uploads(); }
   // The last frame's grid, read back word for word (context current); false before one.
@@ -96,6 +98,7 @@ class HybridPass : public DeferredAOPass {
   Falloff SceneFalloff = Falloff::Binary;
   double Radius = 1.0;  // resolved this frame
   VoxelRegion Region;
+  std::vector<Bounds> Zones;
   HybridMarchConstants Constants;
   std::size_t VoxelizedCasters = 0, VoxelizedStatic = 0;
   bool HasGrid = false;

@@ -9,7 +9,10 @@
 //                  occluded by static geometry too, and carry no bake). The GPU holds it as the
 //                  dynamic grid plus a static grid (the static casters meeting the region), ORed
 //                  by the march, so that each caster is voxelized once.
-// Static receivers outside the region use the bake alone. Combination, the multiplicative blend
+// Static receivers outside the region use the bake alone, and so do those outside every zone: a
+// zone is a dynamic caster's bounds grown by R and a margin for the march's voxel rounding (at
+// most kMaxDynamicZones, the closest merged), so that a static floor between moving objects
+// marches nothing where no dynamic caster is within R. Combination, the multiplicative blend
 // of seed 000: A = 1 - (1 - A_baked)(1 - A_dynamic), exact if the directions each blocks were
 // independent; it lies between the truth for nested occluders (max) and for occluders in disjoint
 // directions (the sum, which it underestimates by A_baked A_dynamic).
@@ -23,12 +26,15 @@
 
 namespace aokit {
 
+constexpr int kMaxDynamicZones = 16;
+
 struct StaticDynamicPlan {
   bool empty = true;                         // no dynamic caster near the view: bake only
   VoxelRegion region;                        // the dynamic region's grid (frame, memory of one grid)
   std::vector<std::size_t> dynamicCasters;   // into the dynamic grid
   std::vector<std::size_t> staticCasters;    // into the static grid: static ones meeting the region
   std::vector<std::size_t> allCasters;       // the full grid: both of the above
+  std::vector<Bounds> zones;                 // where static receivers march (world boxes)
   std::size_t memoryBytes = 0;               // both grids
 };
 
@@ -44,6 +50,10 @@ StaticDynamicPlan planStaticDynamic(const std::vector<Bounds>& casterBounds, con
 StaticDynamicPlan planAroundDynamicRegion(const std::vector<Bounds>& casterBounds, const std::vector<bool>& isStatic,
                                           const VoxelRegion& dynamicRegion, const Bounds& reach,
                                           const ViewFrustum& frustum, double R, const HybridSettings& settings);
+
+// Boxes grown by `by`, merged (least added volume first) until at most `maxCount` remain; more
+// than 256 boxes become their one bounding box.
+std::vector<Bounds> mergeZones(const std::vector<Bounds>& boxes, double by, int maxCount);
 
 // The bounds of the dynamic casters alone (static ones invalid), same indices.
 std::vector<Bounds> dynamicBoundsOnly(const std::vector<Bounds>& casterBounds, const std::vector<bool>& isStatic);
