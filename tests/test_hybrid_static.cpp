@@ -326,3 +326,44 @@ TEST(HybridStatic, PlainVtkProps) {
   renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(window.window());
 }
+
+// The bake is made once; the objects and the camera move on, and the zones and grids follow them.
+TEST(HybridStatic, MovingFramesKeepTheBakeAndFollowTheMovers) {
+  SceneRig rig("courtyard");
+  auto t = rig.attach(staticSettings(128));
+  rig.render(*t);
+  const float* firstValues = t->staticBake().perInstance.begin()->second.data();
+  std::printf("courtyard frames with one bake: frame, rmse against the reference (128 rays)\n");
+  for (int frame : {12, 37}) {
+    rig.scene.animate(rig.scene, frame);
+    rig.renderer.sync();
+    rig.renderer.applyCamera(rig.scene.camera);
+    rig.surfaces = captureSurfaces(rig.window, rig.renderer);
+    const AOBuffer ref = rig.reference(128);
+    const double rmse = compareAO(rig.render(*t), ref).rmse;
+    std::printf("  %2d  %.4f\n", frame, rmse);
+    EXPECT_LT(rmse, 0.035) << frame;
+  }
+  // Capturing the surfaces swapped the technique out and back: the same bake went back on.
+  EXPECT_EQ(t->staticBake().perInstance.begin()->second.data(), firstValues) << "baked once";
+  EXPECT_EQ(actorsWithBake(rig.window.renderer()), 10u);
+  rig.detach();
+}
+
+TEST(HybridStatic, BadSettingsFailInOneLine) {
+  HybridSettings s = staticSettings(0);
+  try {
+    validate(s);
+    FAIL() << "bakeRays 0 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "hybrid: bakeRays must be in 1..4096, got 0");
+  }
+  EXPECT_THROW(makeTechnique("hybrid", "static=1,bakerays=5000"), std::invalid_argument);
+  StaticBakeOptions o;
+  o.rays = 0;
+  Scene scene = makeBuiltinScene("courtyard");
+  EXPECT_THROW(bakeStaticInstances(*scene.root, o), std::invalid_argument);
+  o.rays = 8;
+  o.radius = -1.0;
+  EXPECT_THROW(bakeStaticInstances(*scene.root, o), std::invalid_argument);
+}
