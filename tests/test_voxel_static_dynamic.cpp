@@ -82,7 +82,7 @@ TEST(VertexAOBake, FloorUnderASphereMatchesTheFormFactor) {
   EXPECT_THROW(bakeVertexAO(embree, *s.floor, glm::dmat4(1.0), bad), std::invalid_argument);
 }
 
-TEST(StaticDynamic, RegionIsTheDynamicCastersGrownByR) {
+TEST(StaticDynamic, RegionHoldsTheDynamicCastersAndStaticPartsWithinR) {
   Scene3 s(true);
   const auto instances = collectInstances(*s.scene.root, kCastsAO);
   std::vector<Bounds> bounds;
@@ -99,7 +99,8 @@ TEST(StaticDynamic, RegionIsTheDynamicCastersGrownByR) {
   const Bounds& r = plan.region.box;
   EXPECT_NEAR(r.min.x, -2.5, 1e-9);
   EXPECT_NEAR(r.max.x, 2.5, 1e-9);
-  EXPECT_NEAR(r.max.z, 3.7, 1e-9);
+  EXPECT_NEAR(r.min.z, 0.0, 1e-9);  // the floor's part (nothing static below it)
+  EXPECT_NEAR(r.max.z, 2.2, 1e-9);  // the sphere's top (nothing static above it)
   EXPECT_EQ(plan.memoryBytes, 2 * plan.region.memoryBytes);
   // Everything static: nothing to voxelize.
   const StaticDynamicPlan none = planStaticDynamic(bounds, {true, true, true}, f, 1.5, HybridSettings{});

@@ -88,20 +88,34 @@ StaticDynamicPlan planAroundDynamicRegion(const std::vector<Bounds>& casters, co
   checkSizes(casters, isStatic);
   validate(settings);
   if (dyn.empty) return StaticDynamicPlan{};
-  // Grown by R (receivers and occluders within R of a dynamic caster), cut to the view's reach.
-  Bounds box;
-  for (std::size_t i : dyn.casters) box.extend(casters[i]);
-  if (dyn.box.valid()) {  // the dynamic casters' part that the region kept (the budget may cut it)
-    box.min = glm::max(box.min, dyn.box.min);
-    box.max = glm::min(box.max, dyn.box.max);
+  // The dynamic casters' part that their region kept (the budget may cut it).
+  Bounds dynamicBox;
+  for (std::size_t i : dyn.casters) dynamicBox.extend(casters[i]);
+  if (dyn.box.valid()) {
+    dynamicBox.min = glm::max(dynamicBox.min, dyn.box.min);
+    dynamicBox.max = glm::min(dynamicBox.max, dyn.box.max);
   }
-  box.min -= glm::dvec3(R);
-  box.max += glm::dvec3(R);
+  // Grown by R (static occluders within R of a dynamic caster), cut to the view's reach; the grid
+  // needs only the dynamic casters and the static casters' parts in there.
+  Bounds grown = dynamicBox;
+  grown.min -= glm::dvec3(R);
+  grown.max += glm::dvec3(R);
   if (reach.valid()) {
-    box.min = glm::max(box.min, reach.min);
-    box.max = glm::min(box.max, reach.max);
+    grown.min = glm::max(grown.min, reach.min);
+    grown.max = glm::min(grown.max, reach.max);
   }
-  if (!(box.max.x > box.min.x && box.max.y > box.min.y && box.max.z > box.min.z)) return StaticDynamicPlan{};
+  if (!grown.valid()) return StaticDynamicPlan{};
+  Bounds box = dynamicBox;
+  for (std::size_t i = 0; i < casters.size(); ++i) {
+    if (!isStatic[i] || !casters[i].valid()) continue;
+    Bounds part;
+    part.min = glm::max(casters[i].min, grown.min);
+    part.max = glm::min(casters[i].max, grown.max);
+    box.extend(part);  // nothing when they miss
+  }
+  box.min = glm::max(box.min, grown.min);
+  box.max = glm::min(box.max, grown.max);
+  if (!box.valid()) return StaticDynamicPlan{};
   HybridSettings fixed = settings;
   fixed.region = RegionMode::Box;
   fixed.regionBox = box;

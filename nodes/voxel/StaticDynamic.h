@@ -1,8 +1,9 @@
 #pragma once
 // Static plus dynamic (issue 9 item 5, seed 004 section 4): static casters carry baked per-vertex AO
-// (VertexAOBake.h, StaticBake.h) and the voxelizer covers only the dynamic region, the dynamic
+// (VertexAOBake.h, StaticBake.h) and the voxelizer covers only the dynamic region: the dynamic
 // casters' bounds grown by R (nothing farther can be occluded by them, or occlude them), cut to
-// the frustum's reach. Two grids over that region, one frame:
+// the frustum's reach, and of that only the box holding the dynamic casters and the static ones'
+// parts in it (a flat static floor does not make the grid R deeper). Two grids over it, one frame:
 //   dynamic grid   the dynamic casters only: static receivers in the region march it and combine
 //                  the result with their baked AO (their static-static AO is already baked);
 //   full grid      every caster that meets the region: dynamic receivers march it (they are
