@@ -19,6 +19,7 @@ uniform mat4 aoViewToWorld;   // view -> world (rigid)
 const int AO_FLAG_COVERED = 1;
 const int AO_FLAG_RECEIVES = 2;
 const int AO_FLAG_CASTS = 4;
+const int AO_FLAG_DYNAMIC = 8;  // not static: carries no baked AO (ActorKeys.h propDynamic)
 
 float aoViewZ(float depth)
 {

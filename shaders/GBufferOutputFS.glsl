@@ -18,7 +18,7 @@
 #endif
   // Every target is written with alpha 1: VTK keeps blending on for opaque geometry, and alpha 1
   // makes it a plain overwrite.
-  gl_FragData[@FLAGS@] = vec4(aokitFlags, 0.0, 0.0, 1.0);  // 1 covered + 2 receives + 4 casts, / 255
+  gl_FragData[@FLAGS@] = vec4(aokitFlags, 0.0, 0.0, 1.0);  // 1 covered + 2 receives + 4 casts + 8 dynamic, / 255
 #if AOKIT_GBUFFER_BAKED
   gl_FragData[@BAKED@] = vec4(AOKIT_GBUFFER_BAKED_VALUE, 0.0, 0.0, 1.0);
 #endif

@@ -12,6 +12,11 @@
 // Rays haoFirstRay..haoRayEnd - 1 only: llvmpipe ends an invocation's loops after 65535 iterations
 // in all, so heavy settings run as several passes over parts of the rays, each adding
 // sum k cos / sum cos (the denominator over all rays) to the AO target (blending).
+// HAO_STATIC (static plus dynamic, nodes/voxel/StaticDynamic.h): haoGrid holds the dynamic casters
+// and haoStaticGrid the static ones meeting the region; a static receiver (no AO_FLAG_DYNAMIC)
+// marches haoGrid alone, its static occlusion being baked, and nothing outside the zones (each a
+// dynamic caster's bounds grown by R and a margin: farther than R from every dynamic caster); a
+// dynamic receiver marches both grids, ORed word for word.
 //AOKIT::Defines
 //AOKIT::DeferredCommon
 uniform usampler2D haoGrid;   // R32UI, 4 nx x (ny slabs): texel (4 i + c, s ny + j)
@@ -29,6 +34,12 @@ uniform int haoDownsample;
 uniform ivec2 haoTargetSize;  // the AO target's size
 uniform int haoFirstRay;      // this pass's rays
 uniform int haoRayEnd;
+#if HAO_STATIC
+uniform usampler2D haoStaticGrid;  // same layout and frame as haoGrid
+bool haoWithStatic = false;        // this pixel's receiver is dynamic
+uniform int haoZoneCount;
+uniform vec3 haoZoneMin[HAO_MAX_ZONES], haoZoneMax[HAO_MAX_ZONES];  // world boxes
+#endif
 in vec2 texCoord;
 //VTK::Output::Dec
 
@@ -84,7 +95,25 @@ float haoFalloff(float d)
 
 ivec3 haoVoxel(vec3 g) { return ivec3(floor(clamp(g, vec3(-1.0), vec3(haoDims)))); }
 
-uint haoWord(int i, int j, int k) { return texelFetch(haoGrid, ivec2(4 * i + ((k >> 5) & 3), (k >> 7) * haoDims.y + j), 0).r; }
+uint haoWord(int i, int j, int k)
+{
+  ivec2 t = ivec2(4 * i + ((k >> 5) & 3), (k >> 7) * haoDims.y + j);
+  uint w = texelFetch(haoGrid, t, 0).r;
+#if HAO_STATIC
+  if (haoWithStatic) w |= texelFetch(haoStaticGrid, t, 0).r;
+#endif
+  return w;
+}
+
+#if HAO_STATIC
+// A ray origin outside every zone is farther than R from every dynamic caster.
+bool haoNearDynamic(vec3 o)
+{
+  for (int z = 0; z < haoZoneCount; ++z)
+    if (all(greaterThanEqual(o, haoZoneMin[z])) && all(lessThanEqual(o, haoZoneMax[z]))) return true;
+  return false;
+}
+#endif
 
 // Any voxel k0..k1 (clamped) of column (i, j) set? Outside the grid reads as empty. Most steps
 // stay within one 32-bit word: one fetch, no loop.
@@ -181,7 +210,13 @@ void main()
   vec3 pv = aoViewPosition(g);
   vec3 p = (aoViewToWorld * vec4(pv, 1.0)).xyz;
   vec3 n = normalize(mat3(aoViewToWorld) * aoUnpackNormal(packedN));
-  float ao = haoEmpty != 0 ? 0.0 : haoOcclusion(p, n);
+#if HAO_STATIC
+  haoWithStatic = (aoFlags(g) & AO_FLAG_DYNAMIC) != 0;
+  bool skip = !haoWithStatic && !haoNearDynamic(p + haoNormalOffset * n);
+#else
+  bool skip = false;
+#endif
+  float ao = (haoEmpty != 0 || skip) ? 0.0 : haoOcclusion(p, n);
   gl_FragData[0] = vec4(ao, 0.0, 0.0, 1.0);
   gl_FragData[1] = vec4(pv.z, 0.0, 0.0, 1.0);
 }

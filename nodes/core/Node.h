@@ -13,7 +13,10 @@ enum NodeMask : std::uint32_t {
   kCastsAO = 1u << 0,     // occludes others (enters voxelizers, fields, the reference)
   kReceivesAO = 1u << 1,  // is shaded with AO
   kVisible = 1u << 2,     // drawn at all
-  kDefaultMask = kCastsAO | kReceivesAO | kVisible,
+  kDynamic = 1u << 3,     // may move or deform; cleared on static subtrees, whose AO a technique may
+                          // bake once (on by default, so the AND along a path makes everything
+                          // under a static group static)
+  kDefaultMask = kCastsAO | kReceivesAO | kVisible | kDynamic,
 };
 
 class Node {
@@ -32,6 +35,9 @@ class Node {
   void setMask(std::uint32_t mask) { mask_ = mask; touch(); }
   bool castsAO() const { return mask_ & kCastsAO; }
   bool receivesAO() const { return mask_ & kReceivesAO; }
+  bool isDynamic() const { return mask_ & kDynamic; }
+  // Clears (or sets) kDynamic only: setDynamic(false) on a group marks its whole subtree static.
+  void setDynamic(bool on) { setMask(on ? (mask_ | kDynamic) : (mask_ & ~std::uint32_t(kDynamic))); }
 
   // Set from one process-wide counter on every change that a renderer must pick up, so it only
   // grows, and the largest revision under a root is a change counter for the whole scene

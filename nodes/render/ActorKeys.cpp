@@ -14,18 +14,29 @@ namespace aokit {
 vtkInformationKeyMacro(ActorKeys, CASTS_AO, Integer);
 vtkInformationKeyMacro(ActorKeys, RECEIVES_AO, Integer);
 vtkInformationKeyMacro(ActorKeys, INSTANCE_ID, Integer);
+vtkInformationKeyMacro(ActorKeys, DYNAMIC, Integer);
 
-void tagProp(vtkProp* prop, std::uint32_t mask, std::uint32_t instanceId) {
+namespace {
+vtkInformation* keysOf(vtkProp* prop) {
   vtkInformation* keys = prop->GetPropertyKeys();
   if (!keys) {
     vtkNew<vtkInformation> info;
     prop->SetPropertyKeys(info);
     keys = info;
   }
+  return keys;
+}
+}  // namespace
+
+void tagProp(vtkProp* prop, std::uint32_t mask, std::uint32_t instanceId) {
+  vtkInformation* keys = keysOf(prop);
   keys->Set(ActorKeys::CASTS_AO(), (mask & kCastsAO) ? 1 : 0);
   keys->Set(ActorKeys::RECEIVES_AO(), (mask & kReceivesAO) ? 1 : 0);
   keys->Set(ActorKeys::INSTANCE_ID(), static_cast<int>(instanceId));
+  keys->Set(ActorKeys::DYNAMIC(), (mask & kDynamic) ? 1 : 0);
 }
+
+void setPropDynamic(vtkProp* prop, bool dynamic) { keysOf(prop)->Set(ActorKeys::DYNAMIC(), dynamic ? 1 : 0); }
 
 namespace {
 int keyOr(vtkProp* prop, vtkInformationIntegerKey* key, int fallback) {
@@ -36,6 +47,7 @@ int keyOr(vtkProp* prop, vtkInformationIntegerKey* key, int fallback) {
 
 bool propCastsAO(vtkProp* prop) { return keyOr(prop, ActorKeys::CASTS_AO(), 1) != 0; }
 bool propReceivesAO(vtkProp* prop) { return keyOr(prop, ActorKeys::RECEIVES_AO(), 1) != 0; }
+bool propDynamic(vtkProp* prop) { return keyOr(prop, ActorKeys::DYNAMIC(), 1) != 0; }
 std::uint32_t propInstanceId(vtkProp* prop) {
   return static_cast<std::uint32_t>(keyOr(prop, ActorKeys::INSTANCE_ID(), 0));
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Node masks and instance ids carried on VTK actors (vtkProp::GetPropertyKeys), so that passes see
-// which props cast and receive AO and which scene-graph instance each one is. SceneRenderer tags
-// every actor it makes; props of a plain VTK application carry no tags and count as casting and
-// receiving, with instance id 0.
+// which props cast and receive AO, which are static (may carry baked AO) and which scene-graph
+// instance each one is. SceneRenderer tags every actor it makes; props of a plain VTK application
+// carry no tags and count as casting, receiving and dynamic, with instance id 0 (setPropDynamic
+// marks one static).
 #include <cstdint>
 #include <vector>
 
@@ -16,12 +17,16 @@ struct ActorKeys {
   static vtkInformationIntegerKey* CASTS_AO();     // 0 or 1
   static vtkInformationIntegerKey* RECEIVES_AO();  // 0 or 1
   static vtkInformationIntegerKey* INSTANCE_ID();  // GeometryInstance::id, >= 1
+  static vtkInformationIntegerKey* DYNAMIC();      // 0 (static) or 1
 };
 
-// Sets the three keys on the prop (node mask bits kCastsAO and kReceivesAO of core/Node.h).
+// Sets the four keys on the prop (node mask bits kCastsAO, kReceivesAO and kDynamic of core/Node.h).
 void tagProp(vtkProp* prop, std::uint32_t mask, std::uint32_t instanceId);
+// Sets the DYNAMIC key alone (plain VTK props: false marks one static).
+void setPropDynamic(vtkProp* prop, bool dynamic);
 bool propCastsAO(vtkProp* prop);     // true when untagged
 bool propReceivesAO(vtkProp* prop);  // true when untagged
+bool propDynamic(vtkProp* prop);     // true when untagged
 std::uint32_t propInstanceId(vtkProp* prop);  // 0 when untagged
 
 // The renderer's visible props that cast AO (for passes that draw occluders only: voxelizers).

@@ -327,7 +327,7 @@ bool GBufferPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapp
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
   ActivateDrawBuffers(polyData ? Attachments() : 1);
   if (polyData && program->IsUniformUsed("aokitFlags")) {
-    const int flags = 1 + (propReceivesAO(prop) ? 2 : 0) + (propCastsAO(prop) ? 4 : 0);
+    const int flags = 1 + (propReceivesAO(prop) ? 2 : 0) + (propCastsAO(prop) ? 4 : 0) + (propDynamic(prop) ? 8 : 0);
     program->SetUniformf("aokitFlags", flags / 255.0f);
     program->SetUniformf("aokitInstanceId", static_cast<float>(propInstanceId(prop)));
     program->SetUniformi("aokitParallel", Parallel ? 1 : 0);

@@ -4,7 +4,8 @@
 //   position RGBA32F   view-space position, w = 1 where a surface was drawn (0 = background),
 //   normal   RGBA32F   view-space unit shading normal of the side the eye sees (back faces,
 //                      single-sided sheets and inconsistent winding included),
-//   flags    R8        the prop's AO flags: (1 covered + 2 receives + 4 casts) / 255 (ActorKeys.h),
+//   flags    R8        the prop's AO flags: (1 covered + 2 receives + 4 casts + 8 dynamic) / 255
+//                      (ActorKeys.h),
 //   depth    32F       window depth,
 // plus, with SetBakedAO(true), an R16F target holding the per-vertex AO baked into the props that
 // carry one (render/BakedAO.h; 0 elsewhere), and with SetInstanceIds(true), an R32F target holding

@@ -26,6 +26,7 @@ const std::vector<std::pair<std::string, Builder>>& registry() {
       {"hidden", [](const BuiltinOptions&) { return makeHiddenScene(); }},
       {"behind", [](const BuiltinOptions&) { return makeBehindScene(); }},
       {"animated", [](const BuiltinOptions&) { return makeAnimatedScene(); }},
+      {"courtyard", [](const BuiltinOptions&) { return makeCourtyardScene(); }},
       {"bunny", [](const BuiltinOptions& o) { return makePackagedMeshScene("bunny", o.modelsDir); }},
       {"fandisk", [](const BuiltinOptions& o) { return makePackagedMeshScene("fandisk", o.modelsDir); }},
   };

@@ -16,6 +16,7 @@ Scene makeStackScene();
 Scene makeCorridorScene();
 Scene makeRoomScene(float albedo);
 Scene makeAnimatedScene();
+Scene makeCourtyardScene();
 Scene makeOpenBoxScene();
 Scene makeHiddenScene();
 Scene makeBehindScene();

@@ -7,6 +7,7 @@
 
 #include "reference/ParallelRows.h"
 #include "voxel/HybridSampling.h"
+#include "voxel/StaticDynamic.h"
 
 namespace aokit {
 
@@ -15,7 +16,9 @@ std::string HybridMarchConstants::defines() const {
   d << "#define HAO_RAYS " << rays << "\n"
     << "#define HAO_STEPS " << steps << "\n"
     << "#define HAO_FALLOFF " << static_cast<int>(falloff) << "\n"
-    << "#define HAO_SPAN_TEST " << int(spanTest) << "\n";
+    << "#define HAO_SPAN_TEST " << int(spanTest) << "\n"
+    << "#define HAO_STATIC " << int(staticDynamic) << "\n"
+    << "#define HAO_MAX_ZONES " << kMaxDynamicZones << "\n";
   return d.str();
 }
 

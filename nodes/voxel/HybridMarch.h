@@ -25,6 +25,7 @@ struct HybridMarchConstants {
   int steps = 8;                      // #define HAO_STEPS
   Falloff falloff = Falloff::Binary;  // #define HAO_FALLOFF (0 binary, 1 wendland, 2 sqrt, 3 exponential)
   bool spanTest = true;               // #define HAO_SPAN_TEST
+  bool staticDynamic = false;         // #define HAO_STATIC (GPU: a second, static grid; StaticDynamic.h)
   float radius = 1.0f;                // world units
   float cosMax = 0.0f;                // cos of the cone half-angle: cos(spread * 90 deg), >= 0
   float normalOffset = 0.0f;          // world units

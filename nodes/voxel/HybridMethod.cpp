@@ -53,6 +53,8 @@ std::shared_ptr<AOTechnique> make(const MethodSettings& s) {
   h.normalSupport = s.number("hn", h.normalSupport);
   h.positionSupport = s.number("hp", h.positionSupport);
   h.aoSupport = s.number("ha", h.aoSupport);
+  h.staticBake = s.flag("static", h.staticBake);
+  h.bakeRays = s.integer("bakerays", h.bakeRays);
   h.view = static_cast<HybridView>(s.choice("view", 0));
   return std::make_shared<HybridTechnique>(h);
 }
@@ -103,6 +105,10 @@ const MethodRegistrar registrar{{
         {"hp", SettingKind::Number, "position kernel support, units of R", 1e-3, 4, {},
          number(kDefaults.positionSupport)},
         {"ha", SettingKind::Number, "AO kernel support", 1e-3, 1, {}, number(kDefaults.aoSupport)},
+        {"static", SettingKind::Flag, "static geometry (node mask without kDynamic) baked per vertex once; "
+         "the grids cover the dynamic casters' region", 0, 0, {}, kDefaults.staticBake ? "1" : "0"},
+        {"bakerays", SettingKind::Integer, "static bake: rays per vertex", 1, 4096, {},
+         std::to_string(kDefaults.bakeRays)},
         {"view", SettingKind::Choice, "debug view", 0, 0, {"none", "ao", "normals", "depth", "voxels"}, "none"},
     },
     // Curve, cheap to accurate: quarter resolution with few rays (the second and third err less

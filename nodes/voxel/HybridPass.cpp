@@ -15,6 +15,7 @@
 
 #include "HybridMarchFS.h"
 #include "HybridVoxelViewFS.h"
+#include "render/ActorKeys.h"
 #include "render/FullScreenStage.h"
 #include "render/Textures.h"
 #include "voxel/GpuVoxelizer.h"
@@ -35,6 +36,7 @@ VoxelizeMethod voxelizeMethodFor(VoxelizingFrame frame) {
 
 HybridPass::HybridPass()
     : Voxelizer(std::make_unique<GpuVoxelizer>()),
+      StaticVoxelizer(std::make_unique<GpuVoxelizer>()),
       MarchStage(std::make_unique<FullScreenStage>("march", HybridMarchFS)),
       VoxelViewStage(std::make_unique<FullScreenStage>("voxel view", HybridVoxelViewFS)) {}
 
@@ -45,13 +47,15 @@ void HybridPass::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "GridResolution: " << Settings.gridResolution << ", Rays: " << Settings.rays
      << ", Steps: " << Settings.steps << ", Scale: 1/" << static_cast<int>(Settings.scale)
      << ", FilterSize: " << Settings.filterSize << "\n"
-     << indent << "Radius: " << Settings.radius << " (scene " << SceneRadius << ")\n";
+     << indent << "Radius: " << Settings.radius << " (scene " << SceneRadius << ")\n"
+     << indent << "StaticBake: " << (Settings.staticBake ? "on" : "off") << "\n";
 }
 
 void HybridPass::SetSettings(const HybridSettings& s) {
   validate(s);
   Settings = s;
   Regions.clear();
+  Plans.clear();
   Modified();
 }
 
@@ -84,6 +88,7 @@ DeferredConfig HybridPass::Configure(vtkRenderer* renderer) {
   DeferredConfig c;
   c.downsample = voxels ? 1 : static_cast<int>(Settings.scale);
   c.aoChannels = 1;
+  c.bakedAO = StaticMode();
   c.radius = Radius;
   // The CPU oracle's m = max(1, filterSize): 1 is each pixel's own texel.
   c.upsample.window = voxels ? 0 : std::max(1, Settings.filterSize);
@@ -107,11 +112,15 @@ std::string HybridPass::MarchDefines() const {
   c.steps = Settings.steps;
   c.falloff = Settings.falloff.value_or(SceneFalloff);
   c.spanTest = Settings.spanTest;
+  c.staticDynamic = StaticMode();
   return c.defines();
 }
 
 const char* HybridPass::ReadyFamily(const DeferredFrame& f) {
   if (const char* failed = Voxelizer->ready(f.renWin, voxelizeMethodFor(Settings.frame), Settings.solid)) return failed;
+  if (StaticMode())
+    if (const char* failed = StaticVoxelizer->ready(f.renWin, voxelizeMethodFor(Settings.frame), Settings.solid))
+      return failed;
   if (!MarchStage->ready(f.renWin, MarchDefines())) return "march";
   if (Settings.view == HybridView::Voxels && !VoxelViewStage->ready(f.renWin, "")) return "voxel view";
   return nullptr;
@@ -119,11 +128,15 @@ const char* HybridPass::ReadyFamily(const DeferredFrame& f) {
 
 void HybridPass::Voxelize(DeferredFrame& f) {
   const FrameCasters casters = gatherCasters(f.renderer);
-  Region = Regions.get(frameView(f.renderer), casters.bounds, Radius, Settings);
-  VoxelizedCasters = 0;
+  VoxelizedCasters = VoxelizedStatic = 0;
   HasGrid = false;
   Constants.rays = Settings.rays;  // the march still runs (AO 0): its pass count needs these
   Constants.steps = Settings.steps;
+  if (StaticMode()) {
+    VoxelizeStaticDynamic(f, casters);
+    return;
+  }
+  Region = Regions.get(frameView(f.renderer), casters.bounds, Radius, Settings);
   if (!Region.empty) {
     std::vector<CasterDraw> draws;
     for (std::size_t i : Region.casters)
@@ -135,6 +148,30 @@ void HybridPass::Voxelize(DeferredFrame& f) {
     HasGrid = true;
   }
   Buffers.sweep();  // meshes no caster showed this frame
+}
+
+void HybridPass::VoxelizeStaticDynamic(DeferredFrame& f, const FrameCasters& casters) {
+  const StaticDynamicPlan& plan = Plans.get(frameView(f.renderer), casters.bounds, staticFlags(casters), Radius, Settings);
+  Region = plan.region;
+  Zones = plan.zones;
+  if (!plan.empty) {
+    auto drawsOf = [&](const std::vector<std::size_t>& which) {
+      std::vector<CasterDraw> draws;
+      for (std::size_t i : which)
+        if (const CasterMesh* mesh = Buffers.get(casters.polys[i]))
+          draws.push_back({mesh, CasterBuffers::propMatrix(casters.props[i])});
+      return draws;
+    };
+    const std::vector<CasterDraw> dynamicDraws = drawsOf(plan.dynamicCasters), staticDraws = drawsOf(plan.staticCasters);
+    const VoxelizeMethod method = voxelizeMethodFor(Settings.frame);
+    Voxelizer->voxelize(f.renWin, Region.frame, dynamicDraws, method, Settings.solid);
+    StaticVoxelizer->voxelize(f.renWin, Region.frame, staticDraws, method, Settings.solid);
+    Constants = makeHybridMarchConstants(Settings, Radius, SceneFalloff, Region.frame);
+    VoxelizedCasters = dynamicDraws.size() + staticDraws.size();
+    VoxelizedStatic = staticDraws.size();
+    HasGrid = true;
+  }
+  Buffers.sweep();
 }
 
 void HybridPass::BindGrid(vtkShaderProgram* p, const DeferredFrame& f) {
@@ -149,6 +186,24 @@ void HybridPass::BindGrid(vtkShaderProgram* p, const DeferredFrame& f) {
   grid->Activate();
   p->SetUniformi("haoGrid", grid->GetTextureUnit());
   p->SetUniformi("haoEmpty", HasGrid ? 0 : 1);
+  if (StaticMode() && p->IsUniformUsed("haoStaticGrid")) {
+    vtkTextureObject* statics = HasGrid ? StaticVoxelizer->grid() : nullptr;
+    if (!statics) statics = EmptyGrid;
+    statics->Activate();
+    p->SetUniformi("haoStaticGrid", statics->GetTextureUnit());
+  }
+  if (StaticMode() && p->IsUniformUsed("haoZoneCount")) {
+    float lo[kMaxDynamicZones][3] = {}, hi[kMaxDynamicZones][3] = {};
+    const int count = HasGrid ? static_cast<int>(std::min<std::size_t>(Zones.size(), kMaxDynamicZones)) : 0;
+    for (int z = 0; z < count; ++z)
+      for (int a = 0; a < 3; ++a) {
+        lo[z][a] = static_cast<float>(Zones[z].min[a]);
+        hi[z][a] = static_cast<float>(Zones[z].max[a]);
+      }
+    p->SetUniformi("haoZoneCount", count);
+    p->SetUniform3fv("haoZoneMin", kMaxDynamicZones, lo);
+    p->SetUniform3fv("haoZoneMax", kMaxDynamicZones, hi);
+  }
   const int dims[3] = {Constants.dims.x, Constants.dims.y, Constants.dims.z};
   p->SetUniform1iv("haoDimsV", 3, dims);
   glm::mat4 m = Constants.worldToGrid;
@@ -222,7 +277,7 @@ vtkTextureObject* HybridPass::RenderAO(DeferredFrame& f) {
       f.state->PopFramebufferBindings();
     }
   }
-  (HasGrid ? Voxelizer->grid() : EmptyGrid.Get())->Deactivate();
+  UnbindGrid();
   f.mark("march");
 
   if (Settings.view == HybridView::Voxels) {
@@ -231,9 +286,18 @@ vtkTextureObject* HybridPass::RenderAO(DeferredFrame& f) {
     f.bindCommon(v);
     BindGrid(v, f);
     VoxelViewStage->renderInto(f.fbo, {f.aoTarget});
-    (HasGrid ? Voxelizer->grid() : EmptyGrid.Get())->Deactivate();
+    UnbindGrid();
   }
   return f.aoTarget;
+}
+
+void HybridPass::UnbindGrid() {
+  vtkTextureObject* grid = HasGrid ? Voxelizer->grid() : nullptr;
+  (grid ? grid : EmptyGrid.Get())->Deactivate();
+  if (!StaticMode()) return;
+  vtkTextureObject* statics = HasGrid ? StaticVoxelizer->grid() : nullptr;
+  statics = statics ? statics : EmptyGrid.Get();
+  if (statics != grid) statics->Deactivate();
 }
 
 bool HybridPass::ReadGrid(vtkOpenGLRenderWindow* renWin, VoxelGrid& out) {
@@ -243,20 +307,23 @@ bool HybridPass::ReadGrid(vtkOpenGLRenderWindow* renWin, VoxelGrid& out) {
 }
 
 std::size_t HybridPass::FamilyMemoryBytes() const {
-  return Voxelizer->memoryBytes() + Buffers.memoryBytes() + textureBytes(EmptyGrid);
+  return Voxelizer->memoryBytes() + StaticVoxelizer->memoryBytes() + Buffers.memoryBytes() + textureBytes(EmptyGrid);
 }
 
 void HybridPass::ReleaseFamily(vtkWindow* w) {
   if (auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(w)) renWin->MakeCurrent();
   Voxelizer->release(w);
+  StaticVoxelizer->release(w);
   Buffers.release();
   MarchStage->release(w);
   VoxelViewStage->release(w);
   if (EmptyGrid) EmptyGrid->ReleaseGraphicsResources(w);
   EmptyGrid = nullptr;
   Regions.clear();
+  Plans.clear();
   HasGrid = false;
   Region = VoxelRegion{};
+  Zones.clear();
 }
 
 }  // namespace aokit

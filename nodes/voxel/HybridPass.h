@@ -22,6 +22,15 @@
 // (ActorKeys.h) and show vtkPolyData (CasterBuffers.h). The voxel view (settings.view) ray-casts
 // the grid from the camera at full resolution.
 //
+// Static plus dynamic (settings.staticBake; StaticDynamic.h): props marked static (ActorKeys.h
+// propDynamic false) carry per-vertex AO baked from the static casters (StaticProps.h: the
+// technique bakes in prepare(), plain VTK calls bakeStaticProps), the G-buffer carries it and the
+// combine applies it (DeferredConfig::bakedAO). The region is the dynamic casters' bounds grown by
+// R; the dynamic casters go into one grid, the static ones meeting the region into a second; a
+// static receiver (G-buffer flag AO_FLAG_DYNAMIC clear) marches the dynamic grid only, and not at
+// all outside the zones of the dynamic casters (each one's bounds grown by R: its occlusion is
+// all baked there), a dynamic one marches both.
+//
 // Defaults (HybridSettings): grid 256 on the region's longest side, ThreeAxis, solid fill, 64 MiB
 // budget, 32 rays x 8 steps with span tests, normal offset 2 voxels, half resolution, m = 16.
 #include <memory>
@@ -54,11 +63,13 @@ class HybridPass : public DeferredAOPass {
   void SetSceneFalloff(Falloff f);
 
   // What the last frame used: its region (empty: no caster near the view, AO 0), the march's
-  // constants, the casters voxelized.
+  // constants, the casters voxelized (static mode: dynamic and static grids together).
   const VoxelRegion& GetRegion() const { return Region; }
   const HybridMarchConstants& GetConstants() const { return Constants; }
   std::size_t GetVoxelizedCasters() const { return VoxelizedCasters; }
-  int GetRegionComputations() const { return Regions.recomputed(); }
+  std::size_t GetVoxelizedStaticCasters() const { return VoxelizedStatic; }
+  const std::vector<Bounds>& GetDynamicZones() const { return Zones; }  // static mode
+  int GetRegionComputations() const { return Regions.recomputed() + Plans.recomputed(); }
   std::size_t GetCasterUploads() const { return Buffers.uploads(); }
   // The last frame's grid, read back word for word (context current); false before one.
   bool ReadGrid(vtkOpenGLRenderWindow* renWin, VoxelGrid& out);
@@ -77,20 +88,26 @@ class HybridPass : public DeferredAOPass {
   double ResolvedRadius(vtkRenderer* renderer) const;
   std::string MarchDefines() const;
   void Voxelize(DeferredFrame& f);
+  void VoxelizeStaticDynamic(DeferredFrame& f, const FrameCasters& casters);
   void BindGrid(vtkShaderProgram* p, const DeferredFrame& f);
+  void UnbindGrid();
+  bool StaticMode() const { return Settings.staticBake; }
 
   HybridSettings Settings;
   double SceneRadius = 0.0;
   Falloff SceneFalloff = Falloff::Binary;
   double Radius = 1.0;  // resolved this frame
   VoxelRegion Region;
+  std::vector<Bounds> Zones;
   HybridMarchConstants Constants;
-  std::size_t VoxelizedCasters = 0;
+  std::size_t VoxelizedCasters = 0, VoxelizedStatic = 0;
   bool HasGrid = false;
 
   RegionCache Regions;
+  PlanCache Plans;
   CasterBuffers Buffers;
   std::unique_ptr<GpuVoxelizer> Voxelizer;
+  std::unique_ptr<GpuVoxelizer> StaticVoxelizer;  // static mode: the static casters meeting the region
   std::unique_ptr<FullScreenStage> MarchStage, VoxelViewStage;
   vtkSmartPointer<vtkTextureObject> EmptyGrid;  // bound when no grid exists (a sampler needs a texture)
 

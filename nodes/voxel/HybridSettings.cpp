@@ -60,6 +60,7 @@ void validate(const HybridSettings& s) {
   if (!inOpenClosed(s.positionSupport, 0.0, 4.0))
     fail("positionSupport", "in (0, 4] (units of R)", s.positionSupport);
   if (!inOpenClosed(s.aoSupport, 0.0, 1.0)) fail("aoSupport", "in (0, 1]", s.aoSupport);
+  if (s.bakeRays < 1 || s.bakeRays > 4096) fail("bakeRays", "in 1..4096", s.bakeRays);
   if (s.view != HybridView::None && s.view != HybridView::AO && s.view != HybridView::Normals &&
       s.view != HybridView::Depth && s.view != HybridView::Voxels)
     fail("view", "none, ao, normals, depth or voxels", static_cast<int>(s.view));

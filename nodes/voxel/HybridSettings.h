@@ -77,6 +77,14 @@ struct HybridSettings {
   double positionSupport = 1.0;     //!< h of w_p over |p(x) - p(y)|, in units of R, (0, 4] (seed: 1)
   double aoSupport = 1.0;           //!< h of w_h over |h'(x) - h'(y)|, AO units, (0, 1] (seed: 1)
 
+  // Static plus dynamic (issue 9 item 5; StaticDynamic.h, StaticBake.h).
+  bool staticBake = false;          //!< static geometry (no kDynamic in its node mask; ActorKeys.h
+                                    //!<   propDynamic false) carries AO baked per vertex from the
+                                    //!<   static casters (Embree, once); the grids cover only the
+                                    //!<   dynamic casters' bounds grown by R; static receivers
+                                    //!<   march the dynamic casters only, dynamic ones all casters
+  int bakeRays = 256;               //!< rays per vertex of that bake, 1..4096
+
   HybridView view = HybridView::None;  //!< GPU pass only: what the frame shows
 };
 

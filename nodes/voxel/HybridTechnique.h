@@ -6,6 +6,10 @@
 // the VTK layer, so that plain VTK scenes get the same: the region is recomputed when the camera
 // or a caster's world bounds differ from the last frame's (a moved Transform changes its actor's
 // bounds), and a mesh is uploaded again when its polydata's MTime moves.
+// With settings.staticBake, prepare() bakes the static receivers' AO per vertex from the static
+// casters (StaticBake.h: node masks without kDynamic), and attach()/update() put it on their actors
+// (StaticProps.h). The bake is made once, for the scene's R and falloff then: static geometry that
+// moves afterwards keeps its old values.
 #include <cstdint>
 
 #include <vtkSmartPointer.h>
@@ -13,6 +17,7 @@
 #include "core/AOTechnique.h"
 #include "voxel/HybridPass.h"
 #include "voxel/HybridSettings.h"
+#include "voxel/StaticBake.h"
 
 class vtkRenderPass;
 
@@ -23,6 +28,7 @@ class HybridTechnique : public AOTechnique {
   // Throws std::invalid_argument (one line) on bad settings, before anything is allocated.
   explicit HybridTechnique(HybridSettings settings = {});
   std::string name() const override;
+  void prepare(AOScene& scene, const std::function<void(double)>& progress) override;
   void attach(vtkRenderer* renderer, AOScene& scene) override;
   void detach(vtkRenderer* renderer) override;
   void update(vtkRenderer* renderer, AOScene& scene) override;
@@ -34,11 +40,13 @@ class HybridTechnique : public AOTechnique {
 
   const HybridSettings& settings() const { return settings_; }
   HybridPass* pass() const { return pass_; }
+  const StaticBake& staticBake() const { return bake_; }
 
  private:
   HybridSettings settings_;
   vtkSmartPointer<HybridPass> pass_;
   vtkSmartPointer<vtkRenderPass> previous_;
+  StaticBake bake_;
   bool timing_ = false;
 };
 

@@ -128,6 +128,37 @@ VoxelRegion computePropRegion(const FrameView& v, const std::vector<Bounds>& cas
   return computeVoxelRegion(casters, ViewFrustum::covering(v.camera, v.aspect, v.scene), R, fixed);
 }
 
+std::vector<bool> staticFlags(const FrameCasters& casters) {
+  std::vector<bool> out(casters.props.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = !propDynamic(casters.props[i]);
+  return out;
+}
+
+StaticDynamicPlan computePropStaticDynamic(const FrameView& v, const std::vector<Bounds>& casters,
+                                           const std::vector<bool>& isStatic, double R, const HybridSettings& s) {
+  validate(s);
+  if (!v.scene.valid()) return StaticDynamicPlan{};
+  const ViewFrustum frustum = ViewFrustum::covering(v.camera, v.aspect, v.scene);
+  if (!v.parallel || s.region == RegionMode::Box) return planStaticDynamic(casters, isStatic, frustum, R, s);
+  const VoxelRegion dyn = computePropRegion(v, dynamicBoundsOnly(casters, isStatic), R, s);
+  return planAroundDynamicRegion(casters, isStatic, dyn, grown(parallelViewBox(v), R), frustum, R, s);
+}
+
+const StaticDynamicPlan& PlanCache::get(const FrameView& view, const std::vector<Bounds>& bounds,
+                                        const std::vector<bool>& isStatic, double R, const HybridSettings& settings) {
+  bool same = valid_ && view == view_ && R == radius_ && bounds.size() == bounds_.size() && isStatic == static_;
+  for (std::size_t i = 0; same && i < bounds.size(); ++i) same = sameBounds(bounds[i], bounds_[i]);
+  if (same) return plan_;
+  plan_ = computePropStaticDynamic(view, bounds, isStatic, R, settings);
+  view_ = view;
+  bounds_ = bounds;
+  static_ = isStatic;
+  radius_ = R;
+  valid_ = true;
+  ++recomputed_;
+  return plan_;
+}
+
 const VoxelRegion& RegionCache::get(const FrameView& view, const std::vector<Bounds>& bounds, double R,
                                     const HybridSettings& settings) {
   bool same = valid_ && view == view_ && R == radius_ && bounds.size() == bounds_.size();

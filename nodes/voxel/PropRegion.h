@@ -13,6 +13,7 @@
 #include "core/Bounds.h"
 #include "core/Camera.h"
 #include "voxel/HybridSettings.h"
+#include "voxel/StaticDynamic.h"
 #include "voxel/VoxelRegion.h"
 
 class vtkPolyData;
@@ -45,6 +46,14 @@ FrameView frameView(vtkRenderer* renderer);
 VoxelRegion computePropRegion(const FrameView& view, const std::vector<Bounds>& casterBounds, double R,
                               const HybridSettings& settings);
 
+// The static/dynamic plan of the frame (StaticDynamic.h): isStatic per caster (ActorKeys.h
+// propDynamic false). A parallel view's dynamic region is computePropRegion's, cut to its box.
+StaticDynamicPlan computePropStaticDynamic(const FrameView& view, const std::vector<Bounds>& casterBounds,
+                                           const std::vector<bool>& isStatic, double R, const HybridSettings& settings);
+
+// The static flags of the frame's casters.
+std::vector<bool> staticFlags(const FrameCasters& casters);
+
 class RegionCache {
  public:
   // The region for these inputs; recomputed only when they differ from the last call's (the
@@ -60,6 +69,24 @@ class RegionCache {
   std::vector<Bounds> bounds_;
   double radius_ = 0.0;
   VoxelRegion region_;
+  int recomputed_ = 0;
+};
+
+// As RegionCache, for the static/dynamic plan (also recomputed when a caster's static flag changes).
+class PlanCache {
+ public:
+  const StaticDynamicPlan& get(const FrameView& view, const std::vector<Bounds>& casterBounds,
+                               const std::vector<bool>& isStatic, double R, const HybridSettings& settings);
+  int recomputed() const { return recomputed_; }
+  void clear() { valid_ = false; }
+
+ private:
+  bool valid_ = false;
+  FrameView view_;
+  std::vector<Bounds> bounds_;
+  std::vector<bool> static_;
+  double radius_ = 0.0;
+  StaticDynamicPlan plan_;
   int recomputed_ = 0;
 };
 
