@@ -11,13 +11,6 @@ namespace {
 const FieldTechniqueSettings kDefaults;
 const std::vector<std::string> kResolutions = {"auto", "4", "6", "8", "12", "16", "24", "32", "48", "64", "96", "128"};
 
-std::string number(double v) {
-  std::string s = std::to_string(v);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
-
 std::shared_ptr<AOTechnique> make(const MethodSettings& s) {
   FieldTechniqueSettings t;
   FieldSettings& f = t.field;
@@ -76,23 +69,23 @@ const MethodRegistrar registrar{{
         {"far", SettingKind::Number, "cube far fade end beyond the hull, fraction of R (0 = chosen by the bake)", 0, 4,
          {}, "0"},
         {"near", SettingKind::Number, "cube far fade start beyond the hull, fraction of R (with far)", 0, 4, {},
-         number(kDefaults.field.nearDistance)},
+         defaultNumberText(kDefaults.field.nearDistance)},
         {"gridRays", SettingKind::Integer, "grid bake: rays per grid point", 8, 4096, {},
          std::to_string(kDefaults.field.gridRays)},
         {"inside", SettingKind::Number, "A0: occlusion inside an occluder's convex hull", 0, 1, {},
-         number(kDefaults.field.insideOcclusion)},
-        {"p", SettingKind::Number, "inside-hull blend exponent", 1e-6, 16, {}, number(kDefaults.field.insideExponent)},
-        {"bias", SettingKind::Number, "grid normal offset, grid cells", 0, 4, {}, number(kDefaults.field.bias)},
+         defaultNumberText(kDefaults.field.insideOcclusion)},
+        {"p", SettingKind::Number, "inside-hull blend exponent", 1e-6, 16, {}, defaultNumberText(kDefaults.field.insideExponent)},
+        {"bias", SettingKind::Number, "grid normal offset, grid cells", 0, 4, {}, defaultNumberText(kDefaults.field.bias)},
         {"weights", SettingKind::Choice, "grid term weights", 0, 0, {"normalized", "seed"}, "normalized"},
         {"window", SettingKind::Integer, "upsampling: 0 bilinear depth-aware taps, else joint bilateral window (px)", 0,
          32, {}, "0"},
         {"tolerance", SettingKind::Number, "upsampling depth tolerance, fraction of view depth", 1e-6, 1, {},
-         number(kDefaults.pass.depthTolerance)},
+         defaultNumberText(kDefaults.pass.depthTolerance)},
         {"view", SettingKind::Choice, "debug view (count: occluders per pixel / 8; slice: the fields on a plane)", 0,
          0, {"none", "ao", "normals", "depth", "count", "slice"}, "none"},
         {"sliceAxis", SettingKind::Choice, "slice view: the plane's normal axis", 0, 0, {"x", "y", "z"}, "z"},
         {"slice", SettingKind::Number, "slice view: the plane's coordinate, world units", -1e30, 1e30, {},
-         number(kDefaults.pass.slicePosition)},
+         defaultNumberText(kDefaults.pass.slicePosition)},
         {"self", SettingKind::Flag, "per-vertex self-occlusion of each occluder, baked with its field", 0, 0, {}, "1"},
         {"selfRays", SettingKind::Integer, "self-occlusion bake: rays per vertex", 1, 65536, {},
          std::to_string(kDefaults.field.selfOcclusionRays)},

@@ -163,6 +163,13 @@ std::shared_ptr<AOTechnique> makeTechnique(const std::string& method, const std:
   return info.make ? info.make(settings) : nullptr;
 }
 
+std::string defaultNumberText(double v) {
+  std::string s = std::to_string(v);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
 std::string settingsHelp(const MethodInfo& m) {
   std::string out;
   for (const auto& s : m.settings)

@@ -70,6 +70,9 @@ const MethodInfo& methodInfo(const std::string& name);  // throws listing the kn
 // nullptr for "none". Throws std::invalid_argument naming an unknown method, key or bad value.
 std::shared_ptr<AOTechnique> makeTechnique(const std::string& method, const std::string& setting);
 
+// A setting's default as a registry lists it: 0.5, 2, 0.01 (no trailing zeros).
+std::string defaultNumberText(double v);
+
 // "samples  rays per pixel, 1..64 (default 4)" lines, one per setting, for --help.
 std::string settingsHelp(const MethodInfo& method);
 

@@ -8,13 +8,6 @@ namespace {
 
 const ObscuranceSettings kDefaults;
 
-std::string number(double v) {
-  std::string s = std::to_string(v);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
-
 std::shared_ptr<AOTechnique> make(const MethodSettings& s) {
   ObscuranceSettings o;
   o.samples = s.integer("samples", o.samples);
@@ -56,13 +49,13 @@ const MethodRegistrar registrar{{
         {"silhouette", SettingKind::Flag, "silhouette elimination (0 < z - z* < thickness)", 0, 0, {},
          kDefaults.silhouetteElimination ? "1" : "0"},
         {"transfer", SettingKind::Flag, "ambient transfer W of eq. 9 instead of obscurance", 0, 0, {}, "0"},
-        {"bias", SettingKind::Number, "depth bias, fraction of R", 0, 0.5, {}, number(kDefaults.bias)},
+        {"bias", SettingKind::Number, "depth bias, fraction of R", 0, 0.5, {}, defaultNumberText(kDefaults.bias)},
         {"thickness", SettingKind::Number, "silhouette-elimination window, fraction of R", 1e-6, 4, {},
-         number(kDefaults.thickness)},
+         defaultNumberText(kDefaults.thickness)},
         {"tolerance", SettingKind::Number, "filter and upsampling depth tolerance, fraction of view depth", 1e-6, 1,
-         {}, number(kDefaults.filterTolerance)},
+         {}, defaultNumberText(kDefaults.filterTolerance)},
         {"guard", SettingKind::Number, "guard band, fraction of the screen on each side", 0, 0.5, {},
-         number(kDefaults.guard)},
+         defaultNumberText(kDefaults.guard)},
         {"view", SettingKind::Choice, "debug view", 0, 0, {"none", "ao", "normals", "depth"}, "none"},
     },
     {"samples=2,m=2,thickness=1", "samples=4,m=2,thickness=1", "samples=8,m=2,thickness=1",

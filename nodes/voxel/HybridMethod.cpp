@@ -10,13 +10,6 @@ namespace {
 
 const HybridSettings kDefaults;
 
-std::string number(double v) {
-  std::string s = std::to_string(v);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
-
 std::shared_ptr<AOTechnique> make(const MethodSettings& s) {
   HybridSettings h;
   h.gridResolution = s.integer("res", h.gridResolution);
@@ -68,7 +61,7 @@ const MethodRegistrar registrar{{
         {"res", SettingKind::Integer, "voxels on the region's longest side", 64, 1024, {},
          std::to_string(kDefaults.gridResolution)},
         {"budget", SettingKind::Number, "MiB the grid may hold (res^3 checked before allocating)", 1e-3, 4096, {},
-         number(kDefaults.memoryBudgetMiB)},
+         defaultNumberText(kDefaults.memoryBudgetMiB)},
         {"frame", SettingKind::Choice, "voxelizer: conservative three-axis, the seed's rotated single direction, "
          "dominant axis", 0, 0, {"three-axis", "rotated", "dominant"}, "three-axis"},
         {"seed", SettingKind::Integer, "rotated frame: seed of the random rotation", 0, 2147483647, {},
@@ -77,7 +70,7 @@ const MethodRegistrar registrar{{
         {"lattice", SettingKind::Flag, "voxel size and origin on a fixed lattice (temporal stability)", 0, 0, {},
          kDefaults.snapToLattice ? "1" : "0"},
         {"region", SettingKind::Number, "longest side of the region of interest, units of R", 4, 1024, {},
-         number(kDefaults.regionBudget)},
+         defaultNumberText(kDefaults.regionBudget)},
         {"bx0", SettingKind::Number, "fixed region instead of the view's: min x (with by0 ... bz1)", -1e30, 1e30, {},
          "view"},
         {"by0", SettingKind::Number, "fixed region: min y", -1e30, 1e30, {}, "view"},
@@ -92,19 +85,19 @@ const MethodRegistrar registrar{{
          kDefaults.spanTest ? "1" : "0"},
         {"scale", SettingKind::Choice, "AO-map resolution: half or quarter", 0, 0, {"0.5", "0.25"}, "0.5"},
         {"spread", SettingKind::Number, "cone half-angle, fraction of 90 degrees", 1e-3, 1, {},
-         number(kDefaults.spread)},
+         defaultNumberText(kDefaults.spread)},
         {"radius", SettingKind::Number, "AO radius, world units (0 = the scene's)", 0, 1e30, {}, "scene"},
         {"falloff", SettingKind::Choice, "weight k(d) of a hit over the radius", 0, 0,
          {"binary", "wendland", "sqrt", "exponential"}, "scene"},
         {"offset", SettingKind::Number, "ray origins lifted along the normal, voxels", 0, 4, {},
-         number(kDefaults.normalOffset)},
-        {"cell", SettingKind::Number, "object-space jitter cell, voxels", 1e-3, 16, {}, number(kDefaults.jitterCell)},
+         defaultNumberText(kDefaults.normalOffset)},
+        {"cell", SettingKind::Number, "object-space jitter cell, voxels", 1e-3, 16, {}, defaultNumberText(kDefaults.jitterCell)},
         {"filter", SettingKind::Integer, "bilateral window m, full-resolution pixels (0 = own texel only)", 0, 64, {},
          std::to_string(kDefaults.filterSize)},
-        {"hn", SettingKind::Number, "normal kernel support over 1 - n.n'", 1e-3, 2, {}, number(kDefaults.normalSupport)},
+        {"hn", SettingKind::Number, "normal kernel support over 1 - n.n'", 1e-3, 2, {}, defaultNumberText(kDefaults.normalSupport)},
         {"hp", SettingKind::Number, "position kernel support, units of R", 1e-3, 4, {},
-         number(kDefaults.positionSupport)},
-        {"ha", SettingKind::Number, "AO kernel support", 1e-3, 1, {}, number(kDefaults.aoSupport)},
+         defaultNumberText(kDefaults.positionSupport)},
+        {"ha", SettingKind::Number, "AO kernel support", 1e-3, 1, {}, defaultNumberText(kDefaults.aoSupport)},
         {"static", SettingKind::Flag, "static geometry (node mask without kDynamic) baked per vertex once; "
          "the grids cover the dynamic casters' region", 0, 0, {}, kDefaults.staticBake ? "1" : "0"},
         {"bakerays", SettingKind::Integer, "static bake: rays per vertex", 1, 4096, {},
