@@ -55,10 +55,7 @@ Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& opts) {
 
 std::string defaultModelsDir() {
   if (const char* env = std::getenv("AOKIT_MODELS_DIR"); env && *env) return env;
-  // Compile-time fallback: this file sits at <source>/nodes/scenes/, the models at <source>/models.
-  std::string here = __FILE__;
-  const auto pos = here.rfind("nodes/scenes/");
-  return pos == std::string::npos ? std::string("models") : here.substr(0, pos) + "models";
+  return AOKIT_SOURCE_MODELS_DIR;  // the build's source tree (nodes/CMakeLists.txt)
 }
 
 }  // namespace aokit
