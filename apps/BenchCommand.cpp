@@ -55,8 +55,7 @@ void runBenchCommand(const BenchArgs& a) {
   cfg.frames = a.frames;
   cfg.seed = a.seed;
   cfg.loadScene = [&](const std::string& name) { return scenes.at(name); };
-  const std::string dir = a.outDir + "/";
-  checkOutputPaths({dir + "results.csv", dir + "chart.png", dir + "report.md", a.temporal ? dir + "temporal.csv" : ""});
+  checkOutputsInFolder(a.outDir, {"results.csv", "chart.png", "report.md", a.temporal ? "temporal.csv" : ""});
 
   ensureDirectory(a.outDir);
   BenchCsvStream csv(a.outDir + "/results.csv");

@@ -37,8 +37,8 @@ void runDemo(const DemoArgs& a) {
   Scene scene = a.scene.load();
   applyFalloff(scene, a.falloff);
   for (const auto& [method, setting] : defaultBenchRuns()) makeTechnique(method, setting);
+  checkOutputsInFolder(a.outDir, {"results.csv", "chart.png", "report.md", "reference-ao.png"});
   const std::string dir = a.outDir + "/";
-  checkOutputPaths({dir + "results.csv", dir + "chart.png", dir + "report.md", dir + "reference-ao.png"});
   ensureDirectory(a.outDir);
 
   // Every method's lit frame and AO-only frame.

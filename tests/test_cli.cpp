@@ -121,6 +121,17 @@ TEST_F(CliErrors, RenderWritesAPng) {
   EXPECT_EQ(r.err.find("GLEW"), std::string::npos) << "GLEW must initialize under OSMesa: " << r.err;
 }
 
+// bench and demo create their output folder (README: `bash scripts/demo.sh` writes a new aokit-demo/).
+TEST_F(CliErrors, BenchAndDemoCreateTheirOutputFolder) {
+  const CliRun bench = aokit("bench --scenes sphere-plane --methods none --size 32x24 --samples 4 --frames 1 "
+                             "--no-temporal -o " + out("new-bench"));
+  ASSERT_EQ(bench.code, 0) << bench.err;
+  EXPECT_TRUE(fs::is_regular_file(out("new-bench/results.csv")));
+  const CliRun demo = aokit("demo --size 32x24 -o " + out("new-demo"));
+  ASSERT_EQ(demo.code, 0) << demo.err;
+  EXPECT_TRUE(fs::is_regular_file(out("new-demo/report.md")));
+}
+
 TEST_F(CliErrors, HelpEverywhere) {
   for (const char* sub : {"", "render", "reference", "bench", "demo"}) {
     const CliRun r = aokit(std::string(sub) + " --help");

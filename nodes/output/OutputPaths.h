@@ -13,4 +13,8 @@ namespace aokit {
 // after loading the scene; writeAtomically checks again at write time.
 void checkOutputPaths(const std::vector<std::string>& outputs);
 
+// The same for files a command writes into its output folder (bench, demo). A folder that does not
+// exist yet holds no input and is created later, so only an existing one's files are checked.
+void checkOutputsInFolder(const std::string& folder, const std::vector<std::string>& names);
+
 }  // namespace aokit
