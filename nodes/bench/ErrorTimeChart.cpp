@@ -16,6 +16,7 @@
 #include <vtkPlotLine.h>
 #include <vtkPlotPoints.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
@@ -26,25 +27,40 @@
 namespace aokit {
 
 namespace {
-// A curve is a method at fixed switches, swept over its sample count: "vtkssao" over kernel sizes,
-// "vtkssao blur=1" as a second curve. Sample-count keys are the swept ones.
-std::string curveName(const BenchRow& r) {
-  std::string name = r.method;
-  for (const auto& kv : parseSettings(r.setting))
-    if (kv.first != "kernel" && kv.first != "samples") name += " " + kv.first + "=" + kv.second;
-  return name;
-}
-
 const unsigned char kColors[][3] = {{0, 0, 0},     {214, 39, 40}, {31, 119, 180}, {44, 160, 44},
                                     {255, 127, 14}, {148, 103, 189}, {140, 86, 75}, {227, 119, 194}};
+
+vtkSmartPointer<vtkTable> xyTable(const std::vector<const BenchRow*>& pts, const std::string& yName) {
+  auto table = vtkSmartPointer<vtkTable>::New();
+  vtkNew<vtkFloatArray> x, y;
+  x->SetName("ao_ms");
+  y->SetName(yName.c_str());
+  table->AddColumn(x);
+  table->AddColumn(y);
+  table->SetNumberOfRows(static_cast<vtkIdType>(pts.size()));
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    table->SetValue(static_cast<vtkIdType>(i), 0, pts[i]->aoMs);  // never clamped: the bars show the spread
+    table->SetValue(static_cast<vtkIdType>(i), 1, pts[i]->rmse);
+  }
+  return table;
 }
+
+// The settings no faster setting of the same method beats in error: what a user picks from.
+std::vector<const BenchRow*> paretoFront(std::vector<const BenchRow*> pts) {
+  std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->aoMs < b->aoMs; });
+  std::vector<const BenchRow*> front;
+  for (const BenchRow* p : pts)
+    if (front.empty() || p->rmse < front.back()->rmse) front.push_back(p);
+  return front;
+}
+}  // namespace
 
 void writeErrorTimeChart(const std::string& path, const std::vector<BenchRow>& rows, int panelWidth, int panelHeight) {
   std::vector<std::string> scenes, methodOrder;
   for (const auto& r : rows) {
     if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
-    if (std::find(methodOrder.begin(), methodOrder.end(), curveName(r)) == methodOrder.end())
-      methodOrder.push_back(curveName(r));
+    if (std::find(methodOrder.begin(), methodOrder.end(), r.method) == methodOrder.end())
+      methodOrder.push_back(r.method);
   }
   if (scenes.empty()) return;
   const int cols = std::min<int>(3, static_cast<int>(scenes.size()));
@@ -64,7 +80,7 @@ void writeErrorTimeChart(const std::string& path, const std::vector<BenchRow>& r
     if (!chart) continue;
     chart->SetTitle(scenes[si]);
     chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE vs reference");
-    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("AO time (ms): median of paired differences, bar = quartiles");
+    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("AO time, ms (median of pairs; bar: quartiles)");
     chart->SetShowLegend(true);
     // Error axis from 0, so the gap between curves reads as a ratio.
     double maxErr = 0;
@@ -76,26 +92,23 @@ void writeErrorTimeChart(const std::string& path, const std::vector<BenchRow>& r
     for (std::size_t mi = 0; mi < methodOrder.size(); ++mi) {
       std::vector<const BenchRow*> pts;
       for (const auto& r : rows)
-        if (r.scene == scenes[si] && curveName(r) == methodOrder[mi]) pts.push_back(&r);
+        if (r.scene == scenes[si] && r.method == methodOrder[mi]) pts.push_back(&r);
       if (pts.empty()) continue;
-      std::sort(pts.begin(), pts.end(), [](auto* a, auto* b) { return a->aoMs < b->aoMs; });
-      vtkNew<vtkTable> table;
-      vtkNew<vtkFloatArray> x, y;
-      x->SetName("ao_ms");
-      y->SetName(methodOrder[mi].c_str());
-      table->AddColumn(x);
-      table->AddColumn(y);
-      table->SetNumberOfRows(static_cast<vtkIdType>(pts.size()));
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        table->SetValue(static_cast<vtkIdType>(i), 0, pts[i]->aoMs);  // never clamped: the bars show the spread
-        table->SetValue(static_cast<vtkIdType>(i), 1, pts[i]->rmse);
-      }
-      vtkPlot* plot = chart->AddPlot(pts.size() > 1 ? vtkChart::LINE : vtkChart::POINTS);
-      plot->SetInputData(table, 0, 1);
+      // Every setting a point (one legend entry per method), its best-for-the-time settings a line.
       const auto* c = kColors[mi % 8];
-      plot->SetColor(c[0], c[1], c[2], 255);
-      plot->SetWidth(2.0);
-      if (auto* line = vtkPlotLine::SafeDownCast(plot)) line->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+      vtkPlot* points = chart->AddPlot(vtkChart::POINTS);
+      points->SetInputData(xyTable(pts, methodOrder[mi]), 0, 1);
+      points->SetColor(c[0], c[1], c[2], 255);
+      points->SetWidth(2.0);
+      if (auto* marks = vtkPlotPoints::SafeDownCast(points)) marks->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+      const std::vector<const BenchRow*> front = paretoFront(pts);
+      if (front.size() > 1) {
+        vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+        line->SetInputData(xyTable(front, methodOrder[mi] + " front"), 0, 1);
+        line->SetColor(c[0], c[1], c[2], 255);
+        line->SetWidth(1.5);
+        line->SetLegendVisibility(false);
+      }
       // Each point's AO-time spread: a horizontal bar over its paired differences' quartiles.
       for (const BenchRow* p : pts) {
         vtkNew<vtkTable> bar;

@@ -1,6 +1,7 @@
 #pragma once
-// The bench chart: one panel per scene, RMSE against AO time, each method a curve over its
-// settings. Drawn with VTK's charts in an offscreen window.
+// The bench chart: one panel per scene, RMSE against AO time; each method one colour and legend
+// entry, every setting a point with its time quartiles as a bar, and a line through the method's
+// front (the settings no faster one beats in error). Drawn with VTK's charts offscreen.
 #include <string>
 #include <vector>
 
