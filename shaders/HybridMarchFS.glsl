@@ -140,6 +140,31 @@ bool haoAnyInRun(int i, int j, int k0, int k1)
   return false;
 }
 
+// A ray origin in a set voxel (after the normal offset: a point within a voxel of another surface,
+// in a crease) moves one voxel to the face neighbour that is empty and most along the normal, not
+// behind it. Marching from inside would stop every ray at once (AO near 1 where the reference has
+// about 0.5); the neighbour sees the other surface from outside. No such neighbour: stays.
+vec3 haoLeaveSetVoxel(vec3 origin, vec3 nGrid)
+{
+  ivec3 o = haoVoxel(origin);
+  if (!haoAnyInRun(o.x, o.y, o.z, o.z)) return origin;
+  vec3 best = vec3(0.0);
+  float bestDot = -0.25;
+  for (int a = 0; a < 6; ++a)
+  {
+    vec3 d = vec3(0.0);
+    d[a >> 1] = (a & 1) == 0 ? 1.0 : -1.0;
+    float along = dot(nGrid, d);
+    ivec3 v = o + ivec3(d);
+    if (along > bestDot && !haoAnyInRun(v.x, v.y, v.z, v.z))
+    {
+      bestDot = along;
+      best = d;
+    }
+  }
+  return origin + best;
+}
+
 // Ray i of the pattern in the local frame (z along the normal).
 vec3 haoRayLocal(int i, vec2 jitter)
 {
@@ -159,7 +184,7 @@ float haoOcclusion(vec3 p, vec3 n)
   vec3 t, b;
   haoBasis(n, t, b);
   mat3 m3 = mat3(haoWorldToGrid);
-  vec3 origin = (haoWorldToGrid * vec4(p + haoNormalOffset * n, 1.0)).xyz;
+  vec3 origin = haoLeaveSetVoxel((haoWorldToGrid * vec4(p + haoNormalOffset * n, 1.0)).xyz, normalize(m3 * n));
   float stepLength = haoRadius / float(HAO_STEPS);
   int originK = haoVoxel(origin).z;
   float sum = 0.0, weights = 0.0;

@@ -53,6 +53,27 @@ glm::ivec3 voxelOf(const glm::vec3& g, const glm::ivec3& dims) {
   const glm::vec3 lo(-1.0f), hi(dims);
   return glm::ivec3(glm::floor(glm::clamp(g, lo, hi)));
 }
+// A ray origin in a set voxel (after the normal offset: a point within a voxel of another surface,
+// in a crease) moves one voxel to the face neighbour that is empty and most along the normal, not
+// behind it. Marching from inside would stop every ray at once (AO near 1 where the reference has
+// about 0.5); the neighbour sees the other surface from outside. No such neighbour: stays.
+glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const glm::vec3& nGrid, const glm::ivec3& dims) {
+  const glm::ivec3 o = voxelOf(origin, dims);
+  if (!grid.anyInRun(o.x, o.y, o.z, o.z)) return origin;
+  glm::vec3 best(0.0f);
+  float bestDot = -0.25f;
+  for (int a = 0; a < 6; ++a) {
+    glm::vec3 d(0.0f);
+    d[a >> 1] = (a & 1) == 0 ? 1.0f : -1.0f;
+    const float along = glm::dot(nGrid, d);
+    const glm::ivec3 v = o + glm::ivec3(d);
+    if (along > bestDot && !grid.anyInRun(v.x, v.y, v.z, v.z)) {
+      bestDot = along;
+      best = d;
+    }
+  }
+  return origin + best;
+}
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
@@ -63,7 +84,8 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
   hybridBasis(n, t, b);
   // In grid space: origin and directions go through the matrix once, steps are then additions.
   const glm::mat3 m3(c.worldToGrid);
-  const glm::vec3 origin = glm::vec3(c.worldToGrid * glm::vec4(p + c.normalOffset * n, 1.0f));
+  const glm::vec3 origin = leaveSetVoxel(grid, glm::vec3(c.worldToGrid * glm::vec4(p + c.normalOffset * n, 1.0f)),
+                                         glm::normalize(m3 * n), c.dims);
   const float stepLength = c.radius / static_cast<float>(c.steps);
   float sum = 0.0f, weights = 0.0f;
   for (int i = 0; i < c.rays; ++i) {
