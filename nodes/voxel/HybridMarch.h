@@ -5,7 +5,8 @@
 // matrix, g_-1 = M origin; each g clamped to [-1, dims] before floor, so the int conversion is
 // defined) and tests column (floor g_j.x, floor g_j.y): with the span test every voxel k in
 // [min, max] of (floor g_{j-1}.z, floor g_j.z), clamped to the grid, else only k = floor g_j.z.
-// Outside the grid reads as empty. A non-finite point or normal gives 0.
+// Outside the grid reads as empty. An origin in a set voxel (a crease) first steps to an empty face
+// neighbour along the normal (README.md, March). A non-finite point or normal gives 0.
 #include <cstdint>
 #include <string>
 
