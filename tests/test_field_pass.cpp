@@ -34,22 +34,22 @@ namespace {
 
 constexpr int kW = 256, kH = 192;
 
-// One bake cache for the whole executable (a few bakes, reused across tests).
-std::string cacheDir() {
-  static const std::string dir = [] {
-    const auto d = std::filesystem::temp_directory_path() / ("aokit-test-field-pass-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    return d.string();
-  }();
-  return dir;
-}
+// One bake cache for the whole executable (a few bakes, reused across tests), removed at exit. The
+// folder's name is made before the remover, so it is destroyed after it.
+const std::string kCacheDir =
+    (std::filesystem::temp_directory_path() / ("aokit-test-field-pass-" + std::to_string(::getpid()))).string();
 
 struct RemoveCache {
   ~RemoveCache() {
     std::error_code ec;
-    std::filesystem::remove_all(cacheDir(), ec);
+    std::filesystem::remove_all(kCacheDir, ec);
   }
 } removeCache;
+
+std::string cacheDir() {
+  std::filesystem::create_directories(kCacheDir);
+  return kCacheDir;
+}
 
 std::shared_ptr<FieldTechnique> fieldTechnique(FieldTechniqueSettings s = {}) {
   s.cacheDirectory = cacheDir();
