@@ -4,6 +4,7 @@
 #include "Commands.h"
 #include "Options.h"
 #include "core/Progress.h"
+#include "output/AtomicFile.h"
 #include "output/ImageFiles.h"
 #include "output/OutputPaths.h"
 #include "reference/AOReference.h"
@@ -43,12 +44,14 @@ void runReference(const ReferenceArgs& a) {
   ReferenceStats stats;
   const AOBuffer ref = computeReferenceAO(embree, surfaces, opt, &stats);
   progress.done();
+  OutputGroup outputs;  // all three files or none
   writeAOPNG(a.output + ".png", w, h, ref.ao, ref.covered);
   std::vector<float> raw(ref.ao);
   for (std::size_t i = 0; i < raw.size(); ++i)
     if (!ref.covered[i]) raw[i] = -1.0f;  // uncovered pixels are marked -1 in the raw file
   writeFloatImage(a.output + ".f32", w, h, raw);
   writeFloatImage(a.output + "-stderr.f32", w, h, ref.standardError);
+  outputs.commit();
   std::printf("%s.png, %s.f32: %s %dx%d, %d rays/pixel, %.3g rays/s, standard error RMS %.4f\n", a.output.c_str(),
               a.output.c_str(), scene.name.c_str(), w, h, a.samples, stats.raysPerSecond, meanStandardError(ref));
 }

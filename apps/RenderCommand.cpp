@@ -4,6 +4,7 @@
 #include "Commands.h"
 #include "Options.h"
 #include "methods/MethodRegistry.h"
+#include "output/AtomicFile.h"
 #include "output/ImageFiles.h"
 #include "headless/FrameCapture.h"
 #include "headless/SceneView.h"
@@ -44,6 +45,7 @@ void runRender(const RenderArgs& a) {
   window.render();
   const RGBAImage img = window.readColor();
   AOBuffer ao;
+  OutputGroup outputs;  // both files or neither
   if (!a.aoFloat.empty()) {
     const SurfaceSamples surfaces = captureSurfaces(window, renderer);
     ao = captureAO(window, renderer, surfaces.covered);
@@ -52,6 +54,7 @@ void runRender(const RenderArgs& a) {
     writeFloatImage(a.aoFloat, w, h, ao.ao);
   }
   writePNG(a.output, img.width, img.height, img.pixels);
+  outputs.commit();
   std::printf("%s: %s, method %s%s%s, %dx%d\n", a.output.c_str(), scene.name.c_str(), a.method.c_str(),
               a.setting.empty() ? "" : " ", a.setting.c_str(), w, h);
 }

@@ -42,6 +42,10 @@ TEST_F(CliOutputs, FullDeviceGivesOneLineAndStaysADevice) {
   EXPECT_TRUE(isCharDevice(full));
   expectRefused({"render", "--size", "32x24", "--ao-float", full, "-o", path("a.png")}, "full: cannot write (No space left");
   EXPECT_TRUE(isCharDevice(full));
+  // The other way round: the float file is complete before the PNG fails; it must not stay either
+  // (expectRefused compares the folder's listing).
+  expectRefused({"render", "--size", "32x24", "--ao-float", path("a.f32"), "-o", full}, "full: cannot write (No space left");
+  EXPECT_TRUE(isCharDevice(full));
 }
 
 TEST_F(CliOutputs, NullDeviceTakesTheOutputAndStaysADevice) {

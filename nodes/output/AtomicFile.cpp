@@ -152,6 +152,10 @@ void writeAtomically(const std::string& path, const std::function<void(const std
   try {
     write(tmp);
     sync(tmp, path);
+    if (OutputGroup* group = OutputGroup::current()) {
+      group->add({tmp, path, to});  // put in place by commit(), or removed
+      return;
+    }
     if (to.stream) {
       streamInto(tmp, to, path);
       fs::remove(tmp);
@@ -162,6 +166,35 @@ void writeAtomically(const std::string& path, const std::function<void(const std
     std::error_code ignored;
     fs::remove(tmp, ignored);
     throw;
+  }
+}
+
+namespace {
+thread_local OutputGroup* currentGroup = nullptr;
+}
+
+OutputGroup::OutputGroup() : previous_(currentGroup) { currentGroup = this; }
+
+OutputGroup* OutputGroup::current() { return currentGroup; }
+
+void OutputGroup::commit() {
+  currentGroup = previous_;  // from here on, writes go straight to their places again
+  for (const Pending& p : pending_)
+    if (p.to.stream) streamInto(p.tmp, p.to, p.path);  // throws: the destructor removes the rest
+  for (const Pending& p : pending_)
+    if (!p.to.stream && std::rename(p.tmp.c_str(), p.to.path.c_str()) != 0) fail(p.path, "cannot write", errno);
+  for (const Pending& p : pending_) {
+    std::error_code ignored;
+    if (p.to.stream) fs::remove(p.tmp, ignored);
+  }
+  pending_.clear();
+}
+
+OutputGroup::~OutputGroup() {
+  if (currentGroup == this) currentGroup = previous_;
+  for (const Pending& p : pending_) {
+    std::error_code ignored;
+    fs::remove(p.tmp, ignored);
   }
 }
 

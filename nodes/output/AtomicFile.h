@@ -9,6 +9,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace aokit {
 
@@ -28,6 +29,31 @@ void writeAtomically(const std::string& path, const std::function<void(const std
 // The same for writers that produce a stream: the stream is flushed and checked here, so a full
 // disk cannot go unnoticed in a buffer that a destructor flushes.
 void writeStreamAtomically(const std::string& path, const std::function<void(std::ostream& out)>& write);
+
+// The outputs of one command as one unit. While a group is alive on this thread, writeAtomically
+// writes and checks each output's temporary file but puts nothing in place; commit() then streams
+// the device and FIFO outputs (the ones that can still fail) and renames the files into place. A
+// command that fails on a later output (render --ao-float a.f32 -o /dev/full) leaves none of its
+// outputs behind: without commit, the destructor removes every temporary file.
+class OutputGroup {
+ public:
+  OutputGroup();
+  ~OutputGroup();
+  OutputGroup(const OutputGroup&) = delete;
+  OutputGroup& operator=(const OutputGroup&) = delete;
+  void commit();
+
+  struct Pending {
+    std::string tmp, path;
+    Destination to;
+  };
+  void add(Pending p) { pending_.push_back(std::move(p)); }
+  static OutputGroup* current();
+
+ private:
+  std::vector<Pending> pending_;
+  OutputGroup* previous_;
+};
 
 // Creates a directory (and parents); throws a one-line error when it cannot.
 void ensureDirectory(const std::string& dir);
