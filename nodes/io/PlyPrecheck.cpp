@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "io/BinaryNumbers.h"
 #include "io/PrecheckText.h"
 
 namespace aokit {
@@ -209,21 +210,7 @@ void walkAscii(const PlyHeader& h, std::string_view data) {
 }
 
 double binaryValue(const unsigned char* p, const PlyType& t, bool bigEndian) {
-  std::uint64_t bits = 0;
-  for (int b = 0; b < t.size; ++b) bits |= std::uint64_t(p[bigEndian ? t.size - 1 - b : b]) << (8 * b);
-  if (t.real && t.size == 4) {
-    float f;
-    const auto u = static_cast<std::uint32_t>(bits);
-    std::memcpy(&f, &u, 4);
-    return f;
-  }
-  if (t.real) {
-    double d;
-    std::memcpy(&d, &bits, 8);
-    return d;
-  }
-  if (t.isSigned && (bits >> (8 * t.size - 1)) & 1) return double(static_cast<long long>(bits) - (1LL << (8 * t.size)));
-  return double(bits);
+  return readBinaryNumber(p, t.size, t.real, t.isSigned, bigEndian);
 }
 
 void walkBinary(const PlyHeader& h, std::string_view data) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "io/BinaryNumbers.h"
 #include "io/PrecheckText.h"
 #include "io/VtkCellTypes.h"
 
@@ -149,21 +150,7 @@ class LegacyVtk {
   }
 
   static double bigEndian(const unsigned char* p, const ValueType& t) {
-    std::uint64_t bits = 0;
-    for (int b = 0; b < t.bytes; ++b) bits = (bits << 8) | p[b];
-    if (t.real && t.bytes == 4) {
-      float f;
-      const auto u = static_cast<std::uint32_t>(bits);
-      std::memcpy(&f, &u, 4);
-      return f;
-    }
-    if (t.real) {
-      double d;
-      std::memcpy(&d, &bits, 8);
-      return d;
-    }
-    if (t.min < 0 && t.bytes < 8 && (bits >> (8 * t.bytes - 1)) & 1) return double(bits) - std::ldexp(1.0, 8 * t.bytes);
-    return t.min < 0 ? double(static_cast<std::int64_t>(bits)) : double(bits);
+    return readBinaryNumber(p, t.bytes, t.real, t.min < 0, true);
   }
 
   // A data array's optional METADATA block: lines up to an empty one, as VTK reads it.

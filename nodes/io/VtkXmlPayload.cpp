@@ -7,6 +7,7 @@
 
 #include <zlib.h>
 
+#include "io/BinaryNumbers.h"
 #include "io/TextNumbers.h"
 #include "io/XmlScan.h"
 
@@ -21,26 +22,11 @@ std::uint64_t maxUncompressed(XmlCompressor c, std::uint64_t compressed) {
 }
 
 std::uint64_t readWord(const char* p, int size, bool big) {
-  std::uint64_t v = 0;
-  for (int b = 0; b < size; ++b) v |= std::uint64_t(static_cast<unsigned char>(p[big ? size - 1 - b : b])) << (8 * b);
-  return v;
+  return readBinaryWord(reinterpret_cast<const unsigned char*>(p), size, big);
 }
 
 double readValue(const char* p, const XmlValueType& t, bool big) {
-  const std::uint64_t bits = readWord(p, t.size, big);
-  if (t.real && t.size == 4) {
-    float f;
-    const auto u = static_cast<std::uint32_t>(bits);
-    std::memcpy(&f, &u, 4);
-    return f;
-  }
-  if (t.real) {
-    double d;
-    std::memcpy(&d, &bits, 8);
-    return d;
-  }
-  if (t.isSigned && t.size < 8 && (bits >> (8 * t.size - 1)) & 1) return double(bits) - double(std::uint64_t(1) << (8 * t.size));
-  return t.isSigned ? double(static_cast<std::int64_t>(bits)) : double(bits);
+  return readBinaryNumber(reinterpret_cast<const unsigned char*>(p), t.size, t.real, t.isSigned, big);
 }
 
 // The bytes of an array in order, raw or base64. VTK encodes a header and its data as one base64
