@@ -37,8 +37,10 @@ inline std::string readAll(const fs::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-// Runs AOKIT_CLI with `args` (no shell), without DISPLAY, killing it after `limitSeconds`.
-inline CliResult runAokit(const std::vector<std::string>& args, double limitSeconds = 60.0) {
+// Runs AOKIT_CLI with `args` (no shell), without DISPLAY, killing it after `limitSeconds`; with
+// `interruptAfterSeconds` > 0, sends it SIGINT (a user's Ctrl-C) once that long after the start.
+inline CliResult runAokit(const std::vector<std::string>& args, double limitSeconds = 60.0,
+                          double interruptAfterSeconds = 0.0) {
   static std::atomic<int> counter{0};
   const fs::path base = fs::temp_directory_path() / ("aokit-cli-" + std::to_string(getpid()) + "-" +
                                                      std::to_string(counter++));
@@ -64,10 +66,16 @@ inline CliResult runAokit(const std::vector<std::string>& args, double limitSeco
   }
   CliResult r;
   int status = 0;
+  bool interrupted = false;
   for (;;) {
     const pid_t done = waitpid(pid, &status, WNOHANG);
     if (done == pid) break;
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > limitSeconds) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (interruptAfterSeconds > 0.0 && !interrupted && elapsed > interruptAfterSeconds) {
+      kill(pid, SIGINT);
+      interrupted = true;
+    }
+    if (elapsed > limitSeconds) {
       kill(-pid, SIGKILL);
       kill(pid, SIGKILL);
       waitpid(pid, &status, 0);

@@ -2,14 +2,13 @@
 // exit and no output file; Ctrl-C during a bake leaves nothing behind.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include "CliHarness.h"
 
 #include "fields/FieldFile.h"
 #include "scenes/Shapes.h"
@@ -19,30 +18,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
+using clitest::CliResult;
 
-// Runs a shell command line (stdout captured, stderr to a file).
-CliRun shell(const std::string& cmd) {
-  static int counter = 0;
-  const fs::path errFile =
-      fs::temp_directory_path() / ("aokit-bake-err-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
-  CliRun r;
-  FILE* p = popen((cmd + " 2>" + errFile.string()).c_str(), "r");
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-  std::ifstream e(errFile);
-  r.err.assign(std::istreambuf_iterator<char>(e), {});
-  fs::remove(errFile);
-  return r;
+// `aokit bake` with space-separated arguments (the test's paths have no spaces).
+CliResult bake(const std::string& args, double interruptAfterSeconds = 0.0) {
+  std::vector<std::string> argv{"bake"};
+  std::istringstream in(args);
+  for (std::string a; in >> a;) argv.push_back(a);
+  return clitest::runAokit(argv, 120.0, interruptAfterSeconds);
 }
-
-std::string cli() { return "env -u DISPLAY " + std::string(AOKIT_CLI); }
 
 void writeOff(const std::string& path, const TriangleMesh& m) {
   std::ofstream o(path);
@@ -63,7 +47,7 @@ class BakeCli : public ::testing::Test {
   std::size_t files() const { return std::distance(fs::directory_iterator(dir), fs::directory_iterator{}); }
   void expectError(const std::string& args, const std::string& expect) {
     const std::size_t before = files();
-    const CliRun r = shell(cli() + " bake " + args);
+    const CliResult r = bake(args);
     EXPECT_NE(r.code, 0) << args;
     EXPECT_NE(r.err.find(expect), std::string::npos) << args << "\nstderr: " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\nstderr: " << r.err;
@@ -77,7 +61,7 @@ class BakeCli : public ::testing::Test {
 }  // namespace
 
 TEST_F(BakeCli, Help) {
-  const CliRun r = shell(cli() + " bake --help");
+  const CliResult r = bake("--help");
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("--kind"), std::string::npos);
   EXPECT_NE(r.out.find("--resolution"), std::string::npos);
@@ -100,7 +84,7 @@ TEST_F(BakeCli, BadInput) {
 
 TEST_F(BakeCli, WritesAFieldFile) {
   const std::string f = out("box.aof");
-  const CliRun r = shell(cli() + " bake --mesh " + box + " --kind grid4 --resolution 8 --radius 0.5 --falloff sqrt -o " + f);
+  const CliResult r = bake("--mesh " + box + " --kind grid4 --resolution 8 --radius 0.5 --falloff sqrt -o " + f);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("grid4 field, resolution 8"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("done"), std::string::npos) << r.err;  // progress on stderr
@@ -111,7 +95,7 @@ TEST_F(BakeCli, WritesAFieldFile) {
   EXPECT_EQ(field.info.falloff, Falloff::Sqrt);
   EXPECT_EQ(field.vertexOcclusion.size(), 24u);  // the box's vertices
   // resolution auto: the rule of FieldResolution.h (cube, R = a tenth of the diagonal here).
-  const CliRun a = shell(cli() + " bake --mesh " + box + " --no-self-occlusion -o " + out("auto.aof"));
+  const CliResult a = bake("--mesh " + box + " --no-self-occlusion -o " + out("auto.aof"));
   ASSERT_EQ(a.code, 0) << a.err;
   EXPECT_NE(a.out.find("(auto)"), std::string::npos) << a.out;
   EXPECT_TRUE(readFieldFile(out("auto.aof")).vertexOcclusion.empty());
@@ -122,9 +106,9 @@ TEST_F(BakeCli, InterruptLeavesNoFile) {
   const std::string sphere = out("sphere.off");
   writeOff(sphere, *makeUVSphere(1.0, 128, 64));
   const std::string f = out("sphere.aof");
-  const CliRun r = shell("(" + cli() + " bake --mesh " + sphere + " --kind cube --resolution 128 -o " + f +
-                      " & pid=$!; sleep 1.5; kill -INT $pid; wait $pid; echo exit=$?)");
-  EXPECT_NE(r.out.find("exit=1"), std::string::npos) << r.out << r.err;
+  const CliResult r = bake("--mesh " + sphere + " --kind cube --resolution 128 -o " + f, 1.5);
+  EXPECT_FALSE(r.timedOut);
+  EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
   for (const auto& e : fs::directory_iterator(dir))
     EXPECT_EQ(e.path().string().find("sphere.aof"), std::string::npos) << e.path();

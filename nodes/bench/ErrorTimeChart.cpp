@@ -20,7 +20,6 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
-#include "methods/MethodRegistry.h"
 #include "output/ImageFiles.h"
 #include "headless/OffscreenWindow.h"
 
