@@ -7,7 +7,8 @@
 // its own evaluator (llvmpipe runs both sides of a branch: a program evaluates one kind only).
 // Defines: FIELD_CUBES (1: cube fields), FIELD_GRID (0 none, 1 grid6, 2 grid4),
 // FIELD_CONE (0 multiply, 1 cones),
-// FIELD_GRID_NORMALIZED, FIELD_LUT_W/H (T_LUT), FIELD_CLIP_N (T_clip), FIELD_MERGE_N (T_merge).
+// FIELD_GRID_NORMALIZED, FIELD_LUT_W/H (T_LUT), FIELD_CLIP_N (T_clip), FIELD_MERGE_N (T_merge),
+// FIELD_HORIZON_N (HorizonLimit.h's F).
 uniform samplerBuffer fieldTexels4;   // cube (a, b, c, r0); grid4 terms
 uniform samplerBuffer fieldTexels3;   // cube C0; grid6 terms
 uniform usamplerBuffer fieldInts;     // per field: kind, N, base4, base3
@@ -15,6 +16,9 @@ uniform samplerBuffer fieldFloats;    // per field, 2 texels
 uniform samplerBuffer occluderFloats; // per occluder, 4 texels: M rows 0..2, influence sphere
 uniform usamplerBuffer occluderInts;  // per occluder: instance id, field index
 uniform sampler2D fieldCapLUT;        // T_LUT (CapIntegralTable.h)
+#if FIELD_CUBES
+uniform sampler3D fieldHorizonLUT;    // F of HorizonLimit.h
+#endif
 #if FIELD_CONE
 uniform sampler2D fieldClipLUT;       // T_clip (ConeTables.h)
 uniform sampler3D fieldMergeLUT;      // T_merge
@@ -24,6 +28,7 @@ uniform float fieldInsideOcclusion;   // A0
 uniform float fieldBias;              // grid normal offset, cells
 
 const float FIELD_PI = 3.14159265358979;
+
 const float FIELD_4PI = 12.5663706143592;
 
 // An occluder at the receiver (OccluderCombine.h's OccluderSample).
@@ -114,7 +119,7 @@ struct FieldFrame
 {
   vec4 m0, m1, m2;  // rows of M (world -> field coordinates)
   ivec4 info;       // the field's kind, N, bases
-  vec4 ff0, ff1;    // the field's floats
+  vec4 ff0, ff1, ff2;  // the field's floats
   vec3 x, nf;
 };
 
@@ -135,12 +140,27 @@ FieldFrame fieldFrame(int k, vec3 p, vec3 n)
   f.m2 = texelFetch(occluderFloats, 4 * k + 2);
   int field = int(texelFetch(occluderInts, k).y);
   f.info = ivec4(texelFetch(fieldInts, field));
-  f.ff0 = texelFetch(fieldFloats, 2 * field);
-  f.ff1 = texelFetch(fieldFloats, 2 * field + 1);
+  f.ff0 = texelFetch(fieldFloats, 3 * field);
+  f.ff1 = texelFetch(fieldFloats, 3 * field + 1);
+  f.ff2 = texelFetch(fieldFloats, 3 * field + 2);
   return fieldFrameAt(f, p, n);
 }
 
 #if FIELD_CUBES
+// HorizonLimit.h: the share of the cap below the highest elevation the occluder's hull box
+// (ff1.xyz centre, ff2.xyz half size, field space) can reach above the receiver's tangent plane.
+float fieldHorizonLimit(FieldFrame f, float solidAngle, float cosBeta)
+{
+  vec3 c = f.ff1.xyz, e = f.ff2.xyz;
+  float s = dot(f.nf, c - f.x) + dot(abs(f.nf), e);
+  float d = length(max(abs(f.x - c) - e, vec3(0.0)));
+  float sine = d > 0.0 ? clamp(s / d, 0.0, 1.0) : 1.0;
+  float alpha = acos(clamp(1.0 - solidAngle / (2.0 * FIELD_PI), -1.0, 1.0));
+  return texture(fieldHorizonLUT, vec3(fieldTableCoord(alpha / FIELD_PI, float(FIELD_HORIZON_N)),
+                                       fieldTableCoord(acos(clamp(cosBeta, -1.0, 1.0)) / FIELD_PI, float(FIELD_HORIZON_N)),
+                                       fieldTableCoord(asin(sine) / (0.5 * FIELD_PI), float(FIELD_HORIZON_N)))).r;
+}
+
 // A cube occluder at the receiver (frame f) with unit normal n (world), its fades included
 // (Algorithm 1).
 FieldSample fieldCubeEval(FieldFrame f, vec3 n)
@@ -168,7 +188,7 @@ FieldSample fieldCubeEval(FieldFrame f, vec3 n)
   }
   float e1 = min(r0 + fadeEnd, rMax), e0 = e1 - (fadeEnd - fadeStart);
   float ft = clamp((r - e0) / (e1 - e0), 0.0, 1.0);
-  s.occlusion = r <= rMax ? ao * (1.0 - ft * ft * (3.0 - 2.0 * ft)) : 0.0;
+  s.occlusion = r <= rMax ? ao * (1.0 - ft * ft * (3.0 - 2.0 * ft)) * fieldHorizonLimit(f, s.solidAngle, dot(f.nf, d)) : 0.0;
   s.direction = normalize(f.m0.xyz * d.x + f.m1.xyz * d.y + f.m2.xyz * d.z);  // O's linear part, up to scale
   return s;
 }

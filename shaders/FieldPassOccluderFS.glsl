@@ -22,7 +22,7 @@
 //AOKIT::FieldEval
 uniform vec4 fieldM0, fieldM1, fieldM2;  // rows of M: world -> field coordinates
 uniform int fieldInfo[4];                // the field's kind, N, bases (FieldGpuData.h)
-uniform vec4 fieldF0, fieldF1;           // the field's floats
+uniform vec4 fieldF0, fieldF1, fieldF2;  // the field's floats
 uniform vec4 fieldSphere;                // influence sphere: world centre, radius
 uniform int fieldOwner;                  // the occluder's instance id (0: none)
 uniform sampler2D fieldIds;              // G-buffer instance ids
@@ -51,6 +51,7 @@ void main()
   f.info = ivec4(fieldInfo[0], fieldInfo[1], fieldInfo[2], fieldInfo[3]);
   f.ff0 = fieldF0;
   f.ff1 = fieldF1;
+  f.ff2 = fieldF2;
   f = fieldFrameAt(f, p, n);
 #if FIELD_CUBES
   FieldSample s = fieldCubeEval(f, n);

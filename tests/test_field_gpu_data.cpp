@@ -65,7 +65,7 @@ TEST(FieldGpuData, LayoutOffsetsAndExactBytes) {
   EXPECT_EQ(d.texels4[d.fieldInts[10] * 4 + 5], cube2->radial.occlusion[5]);
   EXPECT_EQ(d.texels3[d.fieldInts[7] * 3 + 7], grid->grid.texels[7]);
   EXPECT_FLOAT_EQ(d.fieldFloats[0], static_cast<float>(cube->radial.rMax));
-  EXPECT_FLOAT_EQ(d.fieldFloats[8 + 4], static_cast<float>(grid->grid.size.x));
+  EXPECT_FLOAT_EQ(d.fieldFloats[kFieldFloatsPerField + 4], static_cast<float>(grid->grid.size.x));
 
   const auto grid4 = bake(*box, FieldKind::Grid4, 8, 1.0);
   EXPECT_THROW(packFields({grid, grid4}), std::invalid_argument);

@@ -141,7 +141,10 @@ TEST(FieldPass, MatchesItsCpuSpecificationPixelByPixel) {
   // grid4 everywhere; cubes last, once instance ids have passed 255 (what the stencil holds; the
   // shader tells larger ones apart). The GPU filters in float where the CPU uses double, and the
   // lean G-buffer packs normals in 10 bits per component: differences of about 1e-3 at most are
-  // expected (measured: RMSE 1e-4, worst 5e-4), never a missing or extra occluder.
+  // expected (measured: RMSE 1e-4, worst 5e-4), never a missing or extra occluder. The horizon
+  // limit (HorizonLimit.h) is steep where a box barely reaches above a receiver's plane (stack's
+  // boxes stand level with each other): there float against double moves a few pixels by more
+  // (measured: RMSE 7.2e-4, 99.9th percentile 2.8e-3, worst 6.8e-2).
   struct Case {
     const char* scene;
     bool autoKind;
@@ -170,7 +173,8 @@ TEST(FieldPass, MatchesItsCpuSpecificationPixelByPixel) {
                 d.rmse, d.p999, d.worst);
     EXPECT_GT(d.pixels, 10000u);
     EXPECT_LT(d.rmse, 1e-3) << c.scene;
-    EXPECT_LT(d.p999, 3e-3) << c.scene;
+    EXPECT_LT(d.p999, 5e-3) << c.scene;
+    EXPECT_LT(d.worst, 0.1) << c.scene;
   }
 }
 

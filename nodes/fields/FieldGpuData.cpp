@@ -33,7 +33,7 @@ FieldGpuData packFields(const std::vector<std::shared_ptr<const BakedField>>& fi
     }
     const std::uint32_t base4 = static_cast<std::uint32_t>(d.texels4.size() / 4);
     const std::uint32_t base3 = static_cast<std::uint32_t>(d.texels3.size() / 3);
-    float floats[8] = {};
+    float floats[kFieldFloatsPerField] = {};
     int n = 0;
     if (f.info.kind == FieldKind::Cube) {
       const RadialField& r = f.radial;
@@ -45,6 +45,11 @@ FieldGpuData packFields(const std::vector<std::shared_ptr<const BakedField>>& fi
       floats[0] = static_cast<float>(r.rMax);
       floats[1] = static_cast<float>(r.fadeStart);
       floats[2] = static_cast<float>(r.fadeEnd);
+      const bool box = r.hullBoxHalf.x >= 0.0;
+      for (int a = 0; a < 3; ++a) {
+        floats[4 + a] = box ? static_cast<float>(r.hullBoxCentre[a]) : 0.0f;
+        floats[8 + a] = box ? static_cast<float>(r.hullBoxHalf[a]) : 1e30f;
+      }
       d.fieldBytes += r.memoryBytes();
     } else {
       const GridField& g = f.grid;
@@ -59,13 +64,13 @@ FieldGpuData packFields(const std::vector<std::shared_ptr<const BakedField>>& fi
       d.fieldBytes += g.memoryBytes();
     }
     d.fieldInts.insert(d.fieldInts.end(), {kindCode(f.info.kind), static_cast<std::uint32_t>(n), base4, base3});
-    d.fieldFloats.insert(d.fieldFloats.end(), floats, floats + 8);
+    d.fieldFloats.insert(d.fieldFloats.end(), floats, floats + kFieldFloatsPerField);
   }
   // A buffer texture cannot be empty.
   if (d.texels4.empty()) d.texels4.assign(4, 0.0f);
   if (d.texels3.empty()) d.texels3.assign(3, 0.0f);
   if (d.fieldInts.empty()) d.fieldInts.assign(4, 0u);
-  if (d.fieldFloats.empty()) d.fieldFloats.assign(8, 0.0f);
+  if (d.fieldFloats.empty()) d.fieldFloats.assign(kFieldFloatsPerField, 0.0f);
   return d;
 }
 

@@ -8,8 +8,10 @@
 //   texels3 (RGB32F buffer):  cube C0 texels; grid6 terms (-x, -y, -z) block then (+x, +y, +z) block
 //   fieldInts (RGBA32UI, 1 texel per field):   (kind 0 cube / 1 grid6 / 2 grid4, N, base in
 //                                               texels4, base in texels3)
-//   fieldFloats (RGBA32F, 2 texels per field): cube (rMax, fadeStart, fadeEnd, 0), (0, 0, 0, 0);
-//                                               grid (origin, 0), (size, 0), occluder coordinates
+//   fieldFloats (RGBA32F, 3 texels per field): cube (rMax, fadeStart, fadeEnd, 0), (hull box
+//                                               centre, 0), (hull box half size, 0) (HorizonLimit.h;
+//                                               half 1e30 when unknown: no limit);
+//                                               grid (origin, 0), (size, 0), (0), occluder coordinates
 // The shader filters texels itself with texelFetch (bilinear for cube faces, trilinear for grids,
 // TextureSampling.h's taps and clamping in float), so any number of fields of any resolution share
 // one buffer each and the field bytes are exactly the fields' own: (N + 2)^2 x 6 x 7 x 4 (cube),
@@ -33,6 +35,8 @@
 #include "fields/FieldSceneEval.h"
 
 namespace aokit {
+
+constexpr int kFieldFloatsPerField = 12;  // 3 RGBA texels
 
 struct FieldGpuData {
   bool hasCube = false;

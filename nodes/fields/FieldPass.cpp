@@ -21,6 +21,7 @@
 #include "FieldPassStartFS.h"
 #include "fields/CapIntegralTable.h"
 #include "fields/ConeTables.h"
+#include "fields/HorizonLimit.h"
 #include "fields/FieldScreenRect.h"
 #include "render/FullScreenStage.h"
 #include "render/Textures.h"
@@ -170,6 +171,7 @@ std::string FieldPass::Defines(int cubes, int grid) const {
          "\n#define FIELD_LUT_H " + std::to_string(CapIntegralTable::kHeight) +
          "\n#define FIELD_CLIP_N " + std::to_string(ClipTable::kSize) +
          "\n#define FIELD_MERGE_N " + std::to_string(MergeTable::kSize) +
+         "\n#define FIELD_HORIZON_N " + std::to_string(HorizonTable::kSize) +
          "\n#define FIELD_DOWNSAMPLE " + std::to_string(downsampleOf(Settings.resolutionScale)) +
          "\n#define FIELD_TILE " + std::to_string(kCullTile) + "\n";
 }
@@ -218,6 +220,8 @@ bool FieldPass::Upload(vtkOpenGLRenderWindow* renWin) {
     const CapIntegralTable& cap = capIntegralTable();
     CapTable = makeTexture2D(renWin, TexFormat::R32F, CapIntegralTable::kWidth, CapIntegralTable::kHeight,
                              cap.texels.data(), TexFilter::Linear);
+    constexpr int h = aokit::HorizonTable::kSize;
+    HorizonTable = makeTexture3D(renWin, TexFormat::R32F, h, h, h, horizonTable().texels.data(), TexFilter::Linear);
   }
   if (Mode() == 1 && !ClipTable) {  // the cone tables only where cones are merged
     const aokit::ClipTable& clip = clipTable();
@@ -238,6 +242,7 @@ void FieldPass::BindFieldData(vtkShaderProgram* p) const {
   setSampler(p, "occluderFloats", OccluderFloats);
   setSampler(p, "occluderInts", OccluderInts);
   setSampler(p, "fieldCapLUT", CapTable);
+  setSampler(p, "fieldHorizonLUT", HorizonTable);
   if (Mode() == 1) {
     setSampler(p, "fieldClipLUT", ClipTable);
     setSampler(p, "fieldMergeLUT", MergeTable);
@@ -405,7 +410,7 @@ bool FieldPass::RenderOccluders(DeferredFrame& f) {
     FullScreenStage& stage = kindPass == 0 ? *CubeStage : *GridStage;
     p = stage.ready(f.renWin, kindPass == 0 ? Defines(1, 0) : Defines(0, grid));
     if (!p) return finish(false);
-    Bound inputs{ids, Texels4, Texels3, CapTable, mode == 1 ? ClipTable.Get() : nullptr,
+    Bound inputs{ids, Texels4, Texels3, CapTable, HorizonTable, mode == 1 ? ClipTable.Get() : nullptr,
                  mode == 1 ? MergeTable.Get() : nullptr};
     f.bindCommon(p);
     BindFieldData(p);
@@ -427,8 +432,10 @@ bool FieldPass::RenderOccluders(DeferredFrame& f) {
       p->SetUniform4f("fieldM2", o + 8);
       p->SetUniform4f("fieldSphere", o + 12);
       p->SetUniform1iv("fieldInfo", 4, info);
-      p->SetUniform4f("fieldF0", &FieldData.fieldFloats[field * 8]);
-      p->SetUniform4f("fieldF1", &FieldData.fieldFloats[field * 8 + 4]);
+      const float* floats = &FieldData.fieldFloats[field * kFieldFloatsPerField];
+      p->SetUniform4f("fieldF0", floats);
+      p->SetUniform4f("fieldF1", floats + 4);
+      p->SetUniform4f("fieldF2", floats + 8);
       p->SetUniformi("fieldOwner", static_cast<int>(owner));
       // The quad lies at the far side of the sphere (a little beyond, against rounding).
       const double far = windowDepth(f.depthToZ, centre.z - o[15] * 1.001 - 1e-6 * std::abs(centre.z));
@@ -483,7 +490,7 @@ void FieldPass::RenderSlice(const vtkRenderState* s) {
   state->vtkglDisable(GL_DEPTH_TEST);
   GBufferPass* g = LastFrame.gbuffer;
   Bound inputs{g->GetDepthTexture(), g->GetNormalTexture(), g->GetColorTexture(), g->GetFlagsTexture(), Texels4,
-               Texels3, FieldInts, FieldFloats, OccluderFloats, OccluderInts, CapTable,
+               Texels3, FieldInts, FieldFloats, OccluderFloats, OccluderInts, CapTable, HorizonTable,
                Mode() == 1 ? ClipTable.Get() : nullptr,
                Mode() == 1 ? MergeTable.Get() : nullptr};
   LastFrame.bindCommon(p);
@@ -496,7 +503,7 @@ void FieldPass::RenderSlice(const vtkRenderState* s) {
 }
 
 std::size_t FieldPass::FamilyMemoryBytes() const {
-  return UploadedBytes + textureBytes(CapTable) + textureBytes(ClipTable) + textureBytes(MergeTable) +
+  return UploadedBytes + textureBytes(CapTable) + textureBytes(HorizonTable) + textureBytes(ClipTable) + textureBytes(MergeTable) +
          textureBytes(StateTarget) + textureBytes(DepthStencil) + textureBytes(BoundsTarget);
 }
 
@@ -508,7 +515,7 @@ void FieldPass::ReleaseFamily(vtkWindow* w) {
   ResolveStage->release(w);
   SliceStage->release(w);
   Texels4 = Texels3 = FieldInts = FieldFloats = OccluderFloats = OccluderInts = nullptr;
-  CapTable = ClipTable = MergeTable = nullptr;
+  CapTable = HorizonTable = ClipTable = MergeTable = nullptr;
   StateTarget = DepthStencil = BoundsTarget = nullptr;
   UploadedBytes = 0;
   FieldsDirty = OccludersDirty = true;

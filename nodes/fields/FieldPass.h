@@ -100,7 +100,7 @@ class FieldPass : public DeferredAOPass {
 
   // Field data and tables (buffer and look-up textures), the running cones (cone mode).
   vtkSmartPointer<vtkTextureObject> Texels4, Texels3, FieldInts, FieldFloats, OccluderFloats, OccluderInts;
-  vtkSmartPointer<vtkTextureObject> CapTable, ClipTable, MergeTable;
+  vtkSmartPointer<vtkTextureObject> CapTable, HorizonTable, ClipTable, MergeTable;
   vtkSmartPointer<vtkTextureObject> StateTarget;
   vtkSmartPointer<vtkTextureObject> DepthStencil;  // AO-target size: receivers' depth and instance ids
   std::size_t UploadedBytes = 0;  // of the buffer textures

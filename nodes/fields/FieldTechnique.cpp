@@ -14,6 +14,7 @@
 #include "fields/ContentHash.h"
 #include "fields/FieldBaker.h"
 #include "fields/FieldCache.h"
+#include "fields/HorizonLimit.h"
 #include "fields/FieldFile.h"
 #include "render/ActorKeys.h"
 #include "render/BakedAO.h"
@@ -82,6 +83,7 @@ std::shared_ptr<const BakedField> FieldTechnique::obtain(const PlannedField& f,
     ++report_.baked;
     report_.bakeSeconds += field->info.bakeSeconds;
   }
+  if (field->info.kind == FieldKind::Cube) updateHullBox(field->radial, *f.mesh);
   baked_[key] = {f.mesh, field};
   return field;
 }

@@ -25,6 +25,9 @@ struct RadialField {
   double fadeStart = 0.0, fadeEnd = 0.0;  // the far fade, as distances beyond the hull (r - r0)
   std::vector<float> occlusion;    // a, b, c, r0
   std::vector<float> centroid;     // C0
+  // The occluder's bounding box in field space (HorizonLimit.h), from its mesh, not stored in
+  // field files; half < 0 when unknown.
+  glm::dvec3 hullBoxCentre{0.0}, hullBoxHalf{-1.0};
 
   // Algorithm 1's far fade, measured from the hull along w rather than from the centre: with a
   // finite R an occluder's shadow ends about R beyond its hull, at a distance from the centre

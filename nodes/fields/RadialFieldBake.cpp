@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "fields/CubeMapLayout.h"
+#include "fields/HorizonLimit.h"
 #include "fields/HullRadius.h"
 #include "fields/OcclusionProbe.h"
 #include "fields/RadialFieldEval.h"
@@ -243,6 +244,7 @@ RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, do
       [&](double f) {
         if (progress) progress(0.9 + 0.1 * f);
       });
+  updateHullBox(field, mesh);
   return field;
 }
 

@@ -5,6 +5,7 @@
 
 #include "fields/CapIntegralTable.h"
 #include "fields/CubeMapLayout.h"
+#include "fields/HorizonLimit.h"
 #include "fields/SphericalCaps.h"
 #include "fields/TextureSampling.h"
 
@@ -45,7 +46,7 @@ RadialSample evaluateRadialField(const RadialField& field, const glm::dvec3& x, 
     const double t = std::pow(r / r0, options.insideExponent);
     ao = t * ao + (1.0 - t) * options.insideOcclusion;
   }
-  s.occlusion = ao * field.fade(r, r0);
+  s.occlusion = ao * field.fade(r, r0) * horizonLimit(field, x, n, s.solidAngle, glm::dot(n, s.direction));
   return s;
 }
 

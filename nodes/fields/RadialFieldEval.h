@@ -10,6 +10,7 @@
 //   A = T_LUT[Omega, n.Upsilon]                           (CapIntegralTable.h)
 //   if r < r0: t = (r / r0)^p; A = t A + (1 - t) A0
 //   e1 = min(r0 + fadeEnd, rMax); A *= 1 - smoothstep(e1 - (fadeEnd - fadeStart), e1, r)
+//   A *= horizonLimit(x, n, Omega, n.Upsilon)             (HorizonLimit.h; not in the seed)
 // The last line is Algorithm 1's smoothstep(r_far, r_near, r) with its window placed relative to
 // the hull (RadialField::fade says why).
 // A receiver at the centre itself (r = 0) uses w = +z.
