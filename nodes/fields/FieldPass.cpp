@@ -21,8 +21,8 @@
 #include "FieldPassStartFS.h"
 #include "fields/CapIntegralTable.h"
 #include "fields/ConeTables.h"
-#include "fields/HorizonLimit.h"
 #include "fields/FieldScreenRect.h"
+#include "fields/HorizonLimit.h"
 #include "render/FullScreenStage.h"
 #include "render/Textures.h"
 
@@ -503,8 +503,8 @@ void FieldPass::RenderSlice(const vtkRenderState* s) {
 }
 
 std::size_t FieldPass::FamilyMemoryBytes() const {
-  return UploadedBytes + textureBytes(CapTable) + textureBytes(HorizonTable) + textureBytes(ClipTable) + textureBytes(MergeTable) +
-         textureBytes(StateTarget) + textureBytes(DepthStencil) + textureBytes(BoundsTarget);
+  return UploadedBytes + textureBytes(CapTable) + textureBytes(HorizonTable) + textureBytes(ClipTable) +
+         textureBytes(MergeTable) + textureBytes(StateTarget) + textureBytes(DepthStencil) + textureBytes(BoundsTarget);
 }
 
 void FieldPass::ReleaseFamily(vtkWindow* w) {

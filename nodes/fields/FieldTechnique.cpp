@@ -14,8 +14,8 @@
 #include "fields/ContentHash.h"
 #include "fields/FieldBaker.h"
 #include "fields/FieldCache.h"
-#include "fields/HorizonLimit.h"
 #include "fields/FieldFile.h"
+#include "fields/HorizonLimit.h"
 #include "render/ActorKeys.h"
 #include "render/BakedAO.h"
 

@@ -32,6 +32,16 @@ std::vector<double> cumulativeFromHorizon(double alpha, double beta, int steps) 
   return out;
 }
 
+// F from the cumulative measure: the share below theta_m = t * pi / 2 (t in [0, 1], linear between
+// quadrature steps); 1 where no part of the cap is above the horizon.
+double fractionBelow(const std::vector<double>& g, double t) {
+  const int steps = static_cast<int>(g.size()) - 1;
+  if (!(g[steps] > 0.0)) return 1.0;
+  const double at = std::clamp(t, 0.0, 1.0) * steps;
+  const int lo = std::min(static_cast<int>(at), steps - 1);
+  return std::clamp((g[lo] + (at - lo) * (g[lo + 1] - g[lo])) / g[steps], 0.0, 1.0);
+}
+
 HorizonTable build() {
   constexpr int n = HorizonTable::kSize, steps = 1024;
   HorizonTable t;
@@ -41,13 +51,9 @@ HorizonTable build() {
     for (int i = 0; i < n; ++i) {
       const double alpha = kPi * i / (n - 1);
       const std::vector<double> g = cumulativeFromHorizon(alpha, beta, steps);
-      for (int k = 0; k < n; ++k) {
-        const double at = static_cast<double>(k) / (n - 1) * steps;  // theta_m in quadrature steps
-        const int lo = std::min(static_cast<int>(at), steps - 1);
-        const double part = g[lo] + (at - lo) * (g[lo + 1] - g[lo]);
+      for (int k = 0; k < n; ++k)
         t.texels[(static_cast<std::size_t>(k) * n + j) * n + i] =
-            static_cast<float>(g[steps] > 0.0 ? std::clamp(part / g[steps], 0.0, 1.0) : 1.0);
-      }
+            static_cast<float>(fractionBelow(g, static_cast<double>(k) / (n - 1)));
     }
   }
   return t;
@@ -56,11 +62,7 @@ HorizonTable build() {
 }  // namespace
 
 double horizonFraction(double halfAngle, double beta, double thetaMax, int steps) {
-  const std::vector<double> g = cumulativeFromHorizon(halfAngle, beta, steps);
-  if (!(g[steps] > 0.0)) return 1.0;
-  const double at = std::clamp(thetaMax / (0.5 * kPi), 0.0, 1.0) * steps;
-  const int lo = std::min(static_cast<int>(at), steps - 1);
-  return std::clamp((g[lo] + (at - lo) * (g[lo + 1] - g[lo])) / g[steps], 0.0, 1.0);
+  return fractionBelow(cumulativeFromHorizon(halfAngle, beta, steps), thetaMax / (0.5 * kPi));
 }
 
 double HorizonTable::sample(double solidAngle, double cosBeta, double thetaMax) const {
