@@ -53,7 +53,7 @@ void checkWritable(const std::string& path) {
 }
 
 void runBake(const BakeArgs& a) {
-  FieldSettings s;
+  FieldBakeSettings s;
   s.kind = parseFieldKind(a.kind);
   s.resolution = parseResolution(a.resolution, s.kind);
   s.threads = a.threads;

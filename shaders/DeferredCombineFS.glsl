@@ -7,8 +7,8 @@
 // selects a view. Upsampling (AO_UPSAMPLE): 0 none (full resolution), 1 the bilinear 2x2 taps
 // around the pixel that lie within a depth tolerance of it, 2 the vertical pass of the separable
 // joint bilateral filter over the horizontal pass's rows (DeferredUpsampleFS.glsl).
-// AO_DEBUG_VIEW 4 shows the family's result (first channel, grey) on every pixel: a family's own
-// debug image (voxels, field slices) rendered at the target size.
+// A family's own debug images (voxels, field slices) are drawn over the frame afterwards
+// (DeferredAOPass::RenderOverlay).
 //AOKIT::Defines
 #if AO_TRANSFER
 #extension GL_ARB_gpu_shader5 : require
@@ -38,8 +38,6 @@ uniform float aoDomainWeights[68];  // AO_UPSAMPLE 2: as in DeferredUpsampleFS.g
 #define AO_PICK(v) (v).r
 #endif
 
-float aoWendland(float t, float h) { float q = clamp(t / h, 0.0, 1.0); float a = 1.0 - q; return a * a * a * a * (4.0 * q + 1.0); }
-
 #if AO_UPSAMPLE == 2
 // Position and normal kernels between (p, n) and the guide of row j of the horizontal pass in
 // column x (the pixel row that row stands for); 0 off surfaces.
@@ -50,9 +48,7 @@ float aoRowGeometry(vec3 p, vec3 n, int x, int j)
   ivec2 t = ivec2(x, aoCellPixel(ivec2(0, j), aoDownsample).y) + aoGuard;
   vec2 ndc = (vec2(t) + 0.5) / vec2(textureSize(aoDepth, 0)) * 2.0 - 1.0;
   float w = aoWendland(length(aoUnproject(ndc, guide.w) - p), aoPositionRadius);
-#if AO_NORMAL_KERNEL
   w *= aoWendland(1.0 - dot(n, guide.xyz), aoNormalSupport);
-#endif
   return w;
 }
 #endif
@@ -116,9 +112,7 @@ AO_TYPE aoAt(ivec2 pix, ivec2 g, vec3 p)
         domain += aoWendland(float(abs(qy - pix.y)), float(aoWindow));
     }
     w *= domain;
-#if AO_RANGE_KERNEL
     if (useAO) w *= aoWendland(abs(AO_SCALAR(h) - AO_SCALAR(hc)), aoRange);
-#endif
     sum += w * h;
     wsum += w;
   }
@@ -153,8 +147,6 @@ void main()
   col = vec4(covered ? aoPackedNormal(g).xyz : vec3(0.0), 1.0);  // packed n * 0.5 + 0.5
 #elif AO_DEBUG_VIEW == 3
   col = vec4(vec3(covered ? exp(p.z / (8.0 * aoRadius)) : 0.0), 1.0);
-#elif AO_DEBUG_VIEW == 4
-  col = vec4(vec3(texelFetch(aoResult, min(pix / aoDownsample, textureSize(aoResult, 0) - 1), 0).r), 1.0);
 #else
   col.rgb *= vec3(1.0) - vec3(ao);
 #endif

@@ -52,3 +52,7 @@ int aoFlags(ivec2 t) { return int(texelFetch(aoFlagsTex, t, 0).r * 255.0 + 0.5);
 // The screen pixel, and the G-buffer texel, that AO-target texel `cell` stands for at downsampling ds.
 ivec2 aoCellPixel(ivec2 cell, int ds) { return min(cell * ds + (ds - 1) / 2, aoScreen - 1); }
 ivec2 aoCellTexel(ivec2 cell, int ds) { return aoCellPixel(cell, ds) + aoGuard; }
+
+// The Wendland kernel w(t, h) = (1 - q)^4 (4 q + 1), q = t / h clamped to [0, 1] (Hybrid AO's eq. 3;
+// render/Wendland.h on the CPU): the upsampler's kernels and the Wendland falloff.
+float aoWendland(float t, float h) { float q = clamp(t / h, 0.0, 1.0); float a = 1.0 - q; return a * a * a * a * (4.0 * q + 1.0); }

@@ -24,17 +24,13 @@ uniform float aoDomainWeights[68];  // domain weight of a texel whose first pixe
                                     // at o + m/2 + ds - 1 (DeferredAOPass.cpp, domainWeights)
 //VTK::Output::Dec
 
-float aoWendland(float t, float h) { float q = clamp(t / h, 0.0, 1.0); float a = 1.0 - q; return a * a * a * a * (4.0 * q + 1.0); }
-
 // Position and normal kernels between (p, n) and the surface at G-buffer texel t; 0 off surfaces.
 float aoGeometryWeight(vec3 p, vec3 n, ivec2 t)
 {
   vec4 packedQ = aoPackedNormal(t);
   if (packedQ.w < 0.5) return 0.0;
   float w = aoWendland(length(aoViewPosition(t) - p), aoPositionRadius);
-#if AO_NORMAL_KERNEL
   w *= aoWendland(1.0 - dot(n, aoUnpackNormal(packedQ)), aoNormalSupport);
-#endif
   return w;
 }
 
@@ -75,9 +71,7 @@ void main()
     }
     vec4 h = texelFetch(aoResult, ivec2(i, o.y), 0);
     w *= domain;
-#if AO_RANGE_KERNEL
     if (useAO) w *= aoWendland(abs(AO_SCALAR(h) - AO_SCALAR(hc)), aoRange);
-#endif
     sum += w * h;
     wsum += w;
   }

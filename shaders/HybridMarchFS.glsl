@@ -83,8 +83,7 @@ float haoFalloff(float d)
 #if HAO_FALLOFF == 0
   return 1.0;
 #elif HAO_FALLOFF == 1
-  float s = 1.0 - q;
-  return (s * s) * (s * s) * (4.0 * q + 1.0);
+  return aoWendland(q, 1.0);
 #elif HAO_FALLOFF == 2
   return 1.0 - sqrt(q);
 #else

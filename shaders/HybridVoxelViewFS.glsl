@@ -2,8 +2,8 @@
 // HybridPass, voxel debug view: every pixel casts the camera's ray through the bit-packed grid
 // (Amanatides-Woo traversal) and shows the first set voxel, its face shaded by the axis it was
 // entered through (x 0.55, y 0.75, z 0.95, dimmed with distance); 0.12 where the ray crosses the
-// grid and meets nothing, 0 where it misses the grid. The base pass shows the result as grey
-// (DeferredDebugView::Result).
+// grid and meets nothing, 0 where it misses the grid, as grey over the frame (HybridPass's
+// overlay, after the combine).
 //AOKIT::Defines
 //AOKIT::DeferredCommon
 uniform usampler2D haoGrid;
@@ -22,7 +22,7 @@ bool haoSet(ivec3 v)
 
 void main()
 {
-  ivec2 pix = ivec2(texCoord * vec2(aoScreen));  // the target is at screen size
+  ivec2 pix = ivec2(texCoord * vec2(aoScreen));  // drawn over the renderer's viewport
   vec2 ndc = (vec2(pix + aoGuard) + 0.5) / vec2(textureSize(aoDepth, 0)) * 2.0 - 1.0;
   // Two points on the pixel's ray in view space (any projection), then grid space.
   vec3 a = aoUnproject(ndc, -1.0), b = aoUnproject(ndc, -2.0);
@@ -30,7 +30,7 @@ void main()
   vec3 d = (haoWorldToGrid * (aoViewToWorld * vec4(b, 1.0))).xyz - o;
   if (haoEmpty != 0)
   {
-    gl_FragData[0] = vec4(0.0);
+    gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
   // Where the line enters and leaves the grid box [0, dims].
@@ -40,7 +40,7 @@ void main()
   float tEnter = max(max(tn.x, tn.y), max(tn.z, -1.0)), tExit = min(tf.x, min(tf.y, tf.z));
   if (!(tEnter < tExit))
   {
-    gl_FragData[0] = vec4(0.0);
+    gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
   vec3 start = o + (tEnter + 1e-4 * (tExit - tEnter)) * d;
@@ -67,5 +67,5 @@ void main()
     v[axis] += stepDir[axis];
     tMax[axis] += tDelta[axis];
   }
-  gl_FragData[0] = vec4(shade, 0.0, 0.0, 1.0);
+  gl_FragData[0] = vec4(vec3(shade), 1.0);
 }

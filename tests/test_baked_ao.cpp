@@ -34,12 +34,8 @@ class BakedOnlyPass : public DeferredAOPass {
   vtkTypeMacro(BakedOnlyPass, DeferredAOPass);
 
  protected:
-  DeferredConfig Configure(vtkRenderer*) override {
-    DeferredConfig c;
-    c.bakedAO = true;
-    return c;
-  }
-  const char* ReadyFamily(const DeferredFrame&) override { return nullptr; }
+  const DeferredSettings& CommonSettings() const override { return Common; }
+  void Plan(const FrameContext&, DeferredPlan& plan) override { plan.config.bakedAO = true; }
   vtkTextureObject* RenderAO(DeferredFrame& f) override {
     f.fbo->Bind();
     f.fbo->AddColorAttachment(0, f.aoTarget);
@@ -50,6 +46,9 @@ class BakedOnlyPass : public DeferredAOPass {
     f.fbo->UnBind();
     return f.aoTarget;
   }
+
+ private:
+  DeferredSettings Common = deferredDefaults(AOScale::Full);
 };
 vtkStandardNewMacro(BakedOnlyPass);
 

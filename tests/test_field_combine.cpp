@@ -133,7 +133,7 @@ TEST(CombineFields, TwoSpheresOverAFloorAgainstTheReference) {
   // Two unit spheres side by side 2.2 apart, 1.2 above a floor: floor points between them see both,
   // partly overlapping. Both combinations stay close to the reference of the pair; the cone merge,
   // which knows the overlap, closer.
-  FieldSettings s;
+  FieldBakeSettings s;
   s.resolution = 12;
   s.threads = 2;
   const auto sphere = makeUVSphere(1.0, 96, 48);

@@ -25,8 +25,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-FieldSettings small(FieldKind kind) {
-  FieldSettings s;
+FieldBakeSettings small(FieldKind kind) {
+  FieldBakeSettings s;
   s.kind = kind;
   s.resolution = kind == FieldKind::Cube ? 6 : 8;
   s.threads = 2;
@@ -182,7 +182,7 @@ TEST_F(FieldFiles, WritesAreAtomic) {
 
 TEST_F(FieldFiles, CacheBakesOnceThenReads) {
   FieldCache cache((dir / "cache").string());
-  const FieldSettings s = small(FieldKind::Cube);
+  const FieldBakeSettings s = small(FieldKind::Cube);
   const CachedField first = cache.getOrBake(box(), s, 0.5, Falloff::Binary);
   EXPECT_FALSE(first.hit);
   EXPECT_TRUE(first.warning.empty()) << first.warning;
@@ -228,7 +228,7 @@ TEST_F(FieldFiles, CacheFolderRules) {
 }
 
 TEST(FieldResolution, AutoFollowsTheOccludersSizeAgainstR) {
-  FieldSettings cube, grid;
+  FieldBakeSettings cube, grid;
   grid.kind = FieldKind::Grid6;
   const auto sphere = makeUVSphere(1.0, 32, 16);
   // Cube: N = ceil(pi rho / R), clamped to 8..64.

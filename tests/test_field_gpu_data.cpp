@@ -15,6 +15,7 @@
 #include "fields/FieldInstances.h"
 #include "fields/FieldScreenRect.h"
 #include "fields/FieldTechnique.h"
+#include "methods/MethodRegistry.h"
 #include "scenes/SceneBuilding.h"
 #include "scenes/Shapes.h"
 
@@ -23,7 +24,7 @@ using namespace aokit;
 namespace {
 
 std::shared_ptr<const BakedField> bake(const TriangleMesh& mesh, FieldKind kind, int resolution, double radius) {
-  FieldSettings s;
+  FieldBakeSettings s;
   s.kind = kind;
   s.resolution = resolution;
   s.selfOcclusion = false;
@@ -107,7 +108,7 @@ TEST(FieldGpuData, NothingBeyondTheInfluenceSphere) {
   // Culling drops an occluder wherever a receiver lies outside its sphere: the CPU evaluator must
   // give exactly 0 there, for any normal, for rotated and scaled placements.
   const auto box = makeBox({1.0, 0.6, 1.4});
-  const FieldPassSettings s;
+  const FieldEvalSettings s;
   std::mt19937 rng(3);
   for (FieldKind kind : {FieldKind::Cube, FieldKind::Grid6, FieldKind::Grid4}) {
     const auto field = bake(*box, kind, 8, 0.8);
@@ -220,29 +221,49 @@ TEST(FieldInstances, OneFieldPerMeshAndScale) {
   EXPECT_THROW(planFields(collectInstances(*root, kCastsAO), 1.0), std::invalid_argument);
 }
 
-TEST(FieldSettings, BadPassAndTechniqueSettingsGiveOneLineErrors) {
-  FieldPassSettings p;
-  EXPECT_NO_THROW(validate(p));
-  p.resolutionScale = 0.3;
-  EXPECT_THROW(validate(p), std::invalid_argument);
+TEST(FieldSettings, BadSettingsGiveOneLineErrorsInTheUsersWords) {
+  auto message = [](const FieldSettings& s) -> std::string {
+    try {
+      validate(s);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  FieldSettings p;
+  EXPECT_EQ(message(p), "");
+  p.common.scale = static_cast<AOScale>(3);
+  EXPECT_EQ(message(p).rfind("field: scale must be one of 1, 0.5, 0.25, got", 0), 0u) << message(p);
   p = {};
-  p.upsampleWindow = 1;
-  EXPECT_THROW(validate(p), std::invalid_argument);
+  p.common.upsample.window = -1;
+  EXPECT_EQ(message(p).rfind("field: window must be", 0), 0u) << message(p);
   p = {};
   p.sliceAxis = 3;
-  EXPECT_THROW(validate(p), std::invalid_argument);
+  EXPECT_EQ(message(p).rfind("field: sliceAxis must be one of x, y, z", 0), 0u) << message(p);
   p = {};
   p.slicePosition = NAN;
-  EXPECT_THROW(validate(p), std::invalid_argument);
-  FieldTechniqueSettings t;
-  t.autoKind = false;
-  t.field.kind = FieldKind::Grid6;
-  t.field.combine = FieldCombine::Cone;
+  EXPECT_EQ(message(p).rfind("field: slice must be", 0), 0u) << message(p);
+  p = {};
+  p.bake.resolution = 1;
+  EXPECT_EQ(message(p), "field: resolution must be auto (from the occluder's size against R) or an integer in 2..128, got 1");
+  p = {};
+  p.bake.farDistance = 1.0;
+  p.bake.nearDistance = 1.5;
+  EXPECT_EQ(message(p), "field: near must be below far (fractions of R)");
+  // window=1 (each pixel's own texel) is one window like the others now: the same range as the
+  // command line's, from the one schema.
+  p = {};
+  p.common.upsample.window = 1;
+  EXPECT_EQ(message(p), "");
+  EXPECT_NO_THROW(makeTechnique("field", "window=1"));
+  FieldSettings t;
+  t.kind = FieldKind::Grid6;
+  t.eval.combine = FieldCombine::Cone;
   try {
     FieldTechnique bad(t);
     FAIL() << "cones on grids accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+    EXPECT_EQ(std::string(e.what()), "field: combine=cone needs kind=cube or auto (grids store no cone)");
   }
 }
 

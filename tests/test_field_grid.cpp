@@ -27,8 +27,8 @@ double sphereOcclusion(double d, double cosBeta, double R) {  // as in test_fiel
   return capOcclusion(half, cosBeta);
 }
 
-FieldSettings gridSettings(FieldKind kind, int n) {
-  FieldSettings s;
+FieldBakeSettings gridSettings(FieldKind kind, int n) {
+  FieldBakeSettings s;
   s.kind = kind;
   s.resolution = n;
   s.threads = 2;
@@ -139,7 +139,7 @@ TEST(GridField, FloorUnderTheSphere) {
   // Upward normals below the sphere, away from the surface by at least 0.3 R (closer, the grid
   // interpolates with the voxelized inside of the occluder: a known limit of grid fields).
   const GridField& g = sphereGrid();
-  GridEvalOptions o;
+  FieldEvalSettings o;
   o.bias = 0.0;  // a receiver facing the occluder: the seed's offset would move it closer
   double sq = 0.0;
   int count = 0;
@@ -196,7 +196,7 @@ TEST(GridField, MovingTheOccluderMovesTheShadow) {
   ro.radius = 1.0;
   ro.threads = 2;
   const AOBuffer ref = computeReferenceAO(*scene, samples, ro);
-  GridEvalOptions opt;
+  FieldEvalSettings opt;
   opt.bias = 0.0;
   double sq = 0.0, refSq = 0.0;
   for (std::size_t i = 0; i < samples.pixelCount(); ++i) {

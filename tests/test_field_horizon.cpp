@@ -28,8 +28,8 @@ double zenithCapFraction(double alpha, double theta) {
   return std::clamp((s2 - c2) / s2, 0.0, 1.0);
 }
 
-FieldSettings quickSettings(int n) {
-  FieldSettings s;
+FieldBakeSettings quickSettings(int n) {
+  FieldBakeSettings s;
   s.resolution = n;
   s.threads = 2;
   return s;

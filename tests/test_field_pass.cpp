@@ -51,15 +51,15 @@ std::string cacheDir() {
   return kCacheDir;
 }
 
-std::shared_ptr<FieldTechnique> fieldTechnique(FieldTechniqueSettings s = {}) {
+std::shared_ptr<FieldTechnique> fieldTechnique(FieldSettings s = {}) {
   s.cacheDirectory = cacheDir();
   return std::make_shared<FieldTechnique>(s);
 }
 
-FieldTechniqueSettings fullResolution() {
-  FieldTechniqueSettings s;
-  s.pass.resolutionScale = 1.0;  // no upsampling: every pixel is evaluated where it is
-  s.field.selfOcclusion = false;
+FieldSettings fullResolution() {
+  FieldSettings s;
+  s.common.scale = AOScale::Full;  // no upsampling: every pixel is evaluated where it is
+  s.bake.selfOcclusion = false;
   return s;
 }
 
@@ -119,7 +119,7 @@ Difference againstSpecification(Rig& rig, FieldTechnique& t, const AOBuffer& gpu
     if (!rig.surfaces.covered[i] || !rig.surfaces.receives[i]) continue;
     const double cpu = evaluateFieldScene(t.fields(), t.occluders(), glm::dvec3(rig.surfaces.position[i]),
                                           glm::normalize(glm::dvec3(rig.surfaces.normal[i])),
-                                          static_cast<std::uint32_t>(ids[i] + 0.5f), t.pass()->GetSettings());
+                                          static_cast<std::uint32_t>(ids[i] + 0.5f), t.pass()->GetSettings().eval);
     errors.push_back(std::abs(gpu.ao[i] - cpu));
   }
   for (double e : errors) {
@@ -161,10 +161,9 @@ TEST(FieldPass, MatchesItsCpuSpecificationPixelByPixel) {
       ASSERT_GT(collectInstances(*scene.root).back().id, 300u);
     }
     Rig rig(std::move(scene));
-    FieldTechniqueSettings s = fullResolution();
-    s.autoKind = c.autoKind;
-    s.field.kind = c.kind;
-    s.field.combine = c.combine;
+    FieldSettings s = fullResolution();
+    if (!c.autoKind) s.kind = c.kind;
+    s.eval.combine = c.combine;
     auto t = fieldTechnique(s);
     const AOBuffer gpu = rig.ao(t);
     const Difference d = againstSpecification(rig, *t, gpu);
@@ -184,7 +183,7 @@ TEST(FieldPass, SphereOverPlaneAgainstTheReference) {
   for (const char* name : {"sphere-plane", "sphere-offscreen"}) {
     Rig rig(makeBuiltinScene(name));
     const AOBuffer reference = rig.reference(256);
-    FieldTechniqueSettings s;
+    FieldSettings s;
     s.cacheDirectory = cacheDir();
     const double field = compareAO(rig.ao(fieldTechnique(s)), reference).rmse;
     const double none = compareAO(AOBuffer{kW, kH, std::vector<float>(reference.ao.size(), 0.0f), reference.covered, {}},

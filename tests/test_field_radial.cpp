@@ -2,6 +2,8 @@
 // reference, Algorithm 1's behaviour across the hull and at the far limit, occluder motion.
 #include <gtest/gtest.h>
 
+#include "PackagedMeshes.h"
+
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -34,8 +36,8 @@ double sphereOcclusion(double d, double cosBeta, double R) {
   return capOcclusion(half, cosBeta);
 }
 
-FieldSettings quickSettings(int n) {
-  FieldSettings s;
+FieldBakeSettings quickSettings(int n) {
+  FieldBakeSettings s;
   s.resolution = n;
   s.threads = 2;
   return s;
@@ -161,7 +163,7 @@ TEST(RadialField, ContinuousAndInRangeAcrossTheHull) {
       }
   }
   // At the centre: the inside-hull constant, A0 (t = 0).
-  RadialEvalOptions o;
+  FieldEvalSettings o;
   o.insideOcclusion = 0.37;
   EXPECT_NEAR(evaluateRadialField(f, glm::dvec3(0.0), {0, 0, 1}, o).occlusion, 0.37, 1e-12);
 }
@@ -260,7 +262,7 @@ TEST(RadialField, FalloffsEstimateTheReferenceQuantity) {
 
 TEST(RadialField, BunnyOutsideTheHullAgainstTheReference) {
   const std::string path = std::string(AOKIT_MODELS_DIR) + "/packaged/bunny00.off";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "run models/fetch-meshes.sh for the packaged meshes";
+  AOKIT_NEED_MESHES(std::filesystem::exists(path), path);
   const TriangleMesh bunny = loadMesh(path);
   const double R = 0.1 * bunny.bounds().diagonal();
   const RadialField f = bakeRadialField(bunny, quickSettings(32), R, Falloff::Binary);

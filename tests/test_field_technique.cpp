@@ -46,7 +46,7 @@ TempDir& temp() {
   return t;
 }
 
-std::shared_ptr<FieldTechnique> technique(FieldTechniqueSettings s = {}) {
+std::shared_ptr<FieldTechnique> technique(FieldSettings s = {}) {
   if (s.cacheDirectory.empty()) s.cacheDirectory = (temp().path / "cache").string();
   return std::make_shared<FieldTechnique>(s);
 }
@@ -77,7 +77,7 @@ TEST(FieldTechnique, SceneFileFieldIsUsedInsteadOfABake) {
   // A sphere's field baked apart (`aokit bake` does the same) and named on the object.
   const fs::path dir = temp().path / "scene-file";
   fs::create_directories(dir);
-  FieldSettings s;
+  FieldBakeSettings s;
   s.resolution = 8;
   s.threads = 2;
   writeFieldFile((dir / "sphere.aof").string(), bakeField(*makeUVSphere(1.0, 64, 32), s, 1.5, Falloff::Binary));
@@ -133,7 +133,7 @@ TEST(FieldTechnique, SceneFileFieldIsUsedInsteadOfABake) {
 }
 
 TEST(FieldTechnique, SecondPrepareReadsTheCache) {
-  FieldTechniqueSettings s;
+  FieldSettings s;
   s.cacheDirectory = (temp().path / "cache-reuse").string();
   Scene scene = makeBuiltinScene("stack");
   auto first = technique(s);
@@ -193,8 +193,8 @@ TEST(FieldTechnique, SelfOcclusionCompletesAConcaveOccluder) {
   scene.camera.position = {0.0, -3.0, 6.0};
   scene.camera.focalPoint = {0.0, 0.0, 0.3};
   scene.camera.viewUp = {0.0, 0.0, 1.0};
-  FieldTechniqueSettings with, without;
-  without.field.selfOcclusion = false;
+  FieldSettings with, without;
+  without.bake.selfOcclusion = false;
   const double withSelf = rmseAgainstReference(scene, technique(with));
   const double withoutSelf = rmseAgainstReference(scene, technique(without));
   std::printf("cup: RMSE %.4f with self-occlusion, %.4f without\n", withSelf, withoutSelf);
@@ -230,9 +230,9 @@ TEST(FieldTechnique, DebugViews) {
   const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
   // Count: occluders evaluated per pixel / 8, at full resolution exactly multiples of 1/8; on
   // sphere-plane at most 1 (the floor's pixels get the sphere, the sphere's the floor).
-  FieldTechniqueSettings count;
-  count.pass.view = FieldDebugView::Count;
-  count.pass.resolutionScale = 1.0;
+  FieldSettings count;
+  count.common.view = DebugView::Count;
+  count.common.scale = AOScale::Full;
   scene.root->setTechnique(technique(count));
   view.renderer.sync();
   const AOBuffer counts = captureAO(view.window, view.renderer, surfaces.covered);
@@ -246,10 +246,10 @@ TEST(FieldTechnique, DebugViews) {
   EXPECT_GT(evaluated, 1000);
 
   // Slice: a plane just above the floor laid over the frame, red where the fields put occlusion.
-  FieldTechniqueSettings slice;
-  slice.pass.view = FieldDebugView::Slice;
-  slice.pass.sliceAxis = 2;
-  slice.pass.slicePosition = 0.05;
+  FieldSettings slice;
+  slice.common.view = DebugView::Slice;
+  slice.sliceAxis = 2;
+  slice.slicePosition = 0.05;
   scene.root->setTechnique(technique(slice));
   view.renderer.sync();
   view.window.render();

@@ -89,7 +89,7 @@ HybridSettings settingsFor(int res, int rays, int steps, double offset, Falloff 
   s.rays = rays;
   s.steps = steps;
   s.normalOffset = offset;
-  s.falloff = f;
+  s.common.falloff = f;
   return s;
 }
 
@@ -107,7 +107,7 @@ struct GridCache {
   }
   AOBuffer march(const HybridSettings& s) {
     const auto& [frame, g] = grid(s.gridResolution, s.solid);
-    const HybridMarchConstants c = makeHybridMarchConstants(s, fx.scene.root->aoRadius(), Falloff::Binary, frame);
+    const HybridMarchConstants c = makeHybridMarchConstants(s, frameContext(s.common, fx.scene.root->aoRadius(), Falloff::Binary), frame);
     return marchHybridAO(g, c, fx.points);
   }
   Error error(const HybridSettings& s, const AOBuffer& ref) { return compare(march(s), ref); }
@@ -229,9 +229,9 @@ TEST(HybridConvergence, NormalOffsetTradeOff) {
     const std::vector<double> offsets = {0.0, 0.5, 1.0, 1.5, 1.75, 2.0, 3.0, 4.0};
     for (double offset : offsets) {
       const HybridSettings s = settingsFor(res, 256, steps, offset, Falloff::Binary);
-      const HybridMarchConstants tc = makeHybridMarchConstants(s, 1.5, Falloff::Binary, tf);
+      const HybridMarchConstants tc = makeHybridMarchConstants(s, frameContext(s.common, 1.5, Falloff::Binary), tf);
       const auto& [frame, grid] = run.grid(res, true);
-      const HybridMarchConstants cc = makeHybridMarchConstants(s, 1.5, Falloff::Binary, frame);
+      const HybridMarchConstants cc = makeHybridMarchConstants(s, frameContext(s.common, 1.5, Falloff::Binary), frame);
       double tiltedAO = 0.0, capAO = 0.0;
       for (std::size_t i = 0; i < tiltedPoints.size(); ++i) {
         tiltedAO += marchHybridAO(tg, tc, tiltedPoints[i], tiltedNormal) / tiltedPoints.size();

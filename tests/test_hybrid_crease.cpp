@@ -53,7 +53,7 @@ TEST(HybridCrease, PointsWithinAVoxelOfAnotherSurfaceAreNotInsideIt) {
   hs.gridResolution = 256;
   hs.rays = 256;
   hs.steps = 32;
-  const HybridMarchConstants c = makeHybridMarchConstants(hs, R, Falloff::Binary, frame);
+  const HybridMarchConstants c = makeHybridMarchConstants(hs, frameContext(hs.common, R, Falloff::Binary), frame);
   const double v = frame.voxelSize;
   std::printf("voxel %.4f, R %.2f, normal offset %.1f voxels\n  d (voxels)   closed form   floor point   wall point\n",
               v, R, hs.normalOffset);

@@ -28,6 +28,7 @@
 #include "scenes/Shapes.h"
 #include "voxel/CpuVoxelizer.h"
 #include "voxel/HybridMarch.h"
+#include "voxel/HybridPass.h"
 #include "voxel/HybridTechnique.h"
 
 using namespace aokit;
@@ -110,7 +111,7 @@ TEST(HybridFailureModes, ThinWallsAcrossTheGridsXAxisLeak) {
       hs.rays = 64;
       hs.steps = steps;
       hs.spanTest = span != 0;
-      const HybridMarchConstants c = makeHybridMarchConstants(hs, R, Falloff::Binary, frame);
+      const HybridMarchConstants c = makeHybridMarchConstants(hs, frameContext(hs.common, R, Falloff::Binary), frame);
       double sum = 0.0;
       for (int i = 0; i < 64; ++i) sum += marchHybridAO(grid, c, glm::vec3(0.0f, 0.013f * i - 0.4f, 0.007f * i), {1, 0, 0});
       ao[span] = sum / 64;
@@ -145,9 +146,9 @@ TEST(HybridFailureModes, RegionBoundaryCutsOffTheFarField) {
 TEST(HybridFailureModes, FewRaysWithoutTheFilter) {
   Rig rig("sphere-plane");
   std::printf("sphere-plane: rays, filter -> RMSE\n");
-  const double unfiltered = rig.run("rays=4,filter=0").rmse;
-  const double filtered = rig.run("rays=4,filter=16").rmse;
-  const double many = rig.run("rays=64,filter=0").rmse;
+  const double unfiltered = rig.run("rays=4,window=1").rmse;
+  const double filtered = rig.run("rays=4,window=16").rmse;
+  const double many = rig.run("rays=64,window=1").rmse;
   std::printf("  4 rays, no filter %.4f; 4 rays, m = 16 %.4f; 64 rays, no filter %.4f\n", unfiltered, filtered, many);
   EXPECT_LT(filtered, 0.6 * unfiltered);
 }

@@ -66,8 +66,8 @@ TEST(HybridMarch, UnderAnInfiniteCeilingMatchesTheClosedForm) {
   const double voxel = ceiling.frame.voxelSize;
   for (Falloff f : {Falloff::Binary, Falloff::Wendland}) {
     HybridSettings s = settings(256, 256, true);
-    s.falloff = f;
-    const HybridMarchConstants c = makeHybridMarchConstants(s, R, Falloff::Binary, ceiling.frame);
+    s.common.falloff = f;
+    const HybridMarchConstants c = makeHybridMarchConstants(s, frameContext(s.common, R, Falloff::Binary), ceiling.frame);
     const double got = ceiling.meanAO(c);
     // The ceiling's voxels reach up to one voxel below it and the origin is lifted by the normal
     // offset: the estimate lies between the closed forms for those two heights (plus noise).
@@ -86,8 +86,8 @@ TEST(HybridMarch, SpanTestsDoNotStepOverThinSheets) {
   const double H = 0.5, R = 1.0;
   const Ceiling thin(H, 0.004, 512);
   const double exact = ceilingAO(Falloff::Binary, H, R);
-  const double point = thin.meanAO(makeHybridMarchConstants(settings(64, 8, false), R, Falloff::Binary, thin.frame));
-  const double span = thin.meanAO(makeHybridMarchConstants(settings(64, 8, true), R, Falloff::Binary, thin.frame));
+  const double point = thin.meanAO(makeHybridMarchConstants(settings(64, 8, false), FrameContext{R, Falloff::Binary}, thin.frame));
+  const double span = thin.meanAO(makeHybridMarchConstants(settings(64, 8, true), FrameContext{R, Falloff::Binary}, thin.frame));
   EXPECT_LT(point, 0.5 * exact);
   // Span tests report the end of the step that crossed the sheet: hits in the last step before R
   // are lost, at most one step's worth of the closed form.
@@ -97,7 +97,7 @@ TEST(HybridMarch, SpanTestsDoNotStepOverThinSheets) {
 
 TEST(HybridMarch, OutsideTheGridIsEmptyAndBadPixelsAreSkipped) {
   const Ceiling ceiling(0.5, 0.3, 128);
-  const HybridMarchConstants c = makeHybridMarchConstants(settings(32, 8, true), 1.0, Falloff::Binary, ceiling.frame);
+  const HybridMarchConstants c = makeHybridMarchConstants(settings(32, 8, true), FrameContext{1.0, Falloff::Binary}, ceiling.frame);
   // Far from the grid: nothing to hit.
   EXPECT_EQ(marchHybridAO(ceiling.grid, c, glm::vec3(50.0f, 0.0f, 0.0f), glm::vec3(0, 0, 1)), 0.0f);
   // Beyond the int range, or not a number: no occlusion, no undefined conversion.
@@ -128,7 +128,7 @@ TEST(HybridMarch, ConstantsFollowSettingsAndFrame) {
   const Ceiling ceiling(0.5, 0.3, 128);
   HybridSettings s = settings(16, 8, true);
   s.spread = 0.5;
-  const HybridMarchConstants c = makeHybridMarchConstants(s, 2.0, Falloff::Wendland, ceiling.frame);
+  const HybridMarchConstants c = makeHybridMarchConstants(s, frameContext(s.common, 2.0, Falloff::Wendland), ceiling.frame);
   EXPECT_EQ(c.radius, 2.0f);
   EXPECT_EQ(c.falloff, Falloff::Wendland);
   EXPECT_NEAR(c.cosMax, std::cos(0.25 * 3.14159265358979), 1e-6);
@@ -136,8 +136,8 @@ TEST(HybridMarch, ConstantsFollowSettingsAndFrame) {
   EXPECT_EQ(c.dims, ceiling.frame.dims);
   EXPECT_NE(c.defines().find("#define HAO_RAYS 16\n"), std::string::npos);
   EXPECT_NE(c.defines().find("#define HAO_SPAN_TEST 1\n"), std::string::npos);
-  s.radius = 0.0;
-  EXPECT_THROW(makeHybridMarchConstants(s, 0.0, Falloff::Binary, ceiling.frame), std::invalid_argument);
+  s.common.radius = 0.0;
+  EXPECT_THROW(makeHybridMarchConstants(s, frameContext(s.common, 0.0, Falloff::Binary), ceiling.frame), std::invalid_argument);
   s.rays = 0;
-  EXPECT_THROW(makeHybridMarchConstants(s, 1.0, Falloff::Binary, ceiling.frame), std::invalid_argument);
+  EXPECT_THROW(makeHybridMarchConstants(s, frameContext(s.common, 1.0, Falloff::Binary), ceiling.frame), std::invalid_argument);
 }

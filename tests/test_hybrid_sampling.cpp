@@ -8,6 +8,7 @@
 #include <random>
 
 #include "reference/Falloff.h"
+#include "render/Wendland.h"
 #include "voxel/HybridSampling.h"
 
 using namespace aokit;

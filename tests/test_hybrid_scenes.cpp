@@ -179,7 +179,7 @@ TEST(HybridScenes, FixedSurfacePointsKeepTheirAOWhenTheCameraMoves) {
     std::vector<GeometryInstance> in;
     for (std::size_t i : r.casters) in.push_back(casters[i]);
     const VoxelGrid g = voxelizeInstances(in, r.frame, VoxelizeMethod::ThreeAxis, true);
-    const HybridMarchConstants c = makeHybridMarchConstants(hs, s.root->aoRadius(), s.root->falloff(), r.frame);
+    const HybridMarchConstants c = makeHybridMarchConstants(hs, frameContext(hs.common, s.root->aoRadius(), s.root->falloff()), r.frame);
     std::vector<float> ao;
     for (const glm::vec3& p : points) ao.push_back(marchHybridAO(g, c, p, glm::vec3(0, 0, 1)));
     return ao;

@@ -132,7 +132,7 @@ TEST(HybridStatic, TheGBufferTellsStaticFromDynamicReceivers) {
 // combine stage does: same region and zones, same AO but for float round-off.
 TEST(HybridStatic, MatchesTheCpuOracleOnItsOwnGBuffer) {
   std::printf("static mode, GPU against CPU oracle: AO |diff| mean, p99, max, share > 0.05\n");
-  for (const char* setting : {"static=1,bakerays=32", "static=1,bakerays=32,scale=0.25,filter=12,rays=12,steps=5"}) {
+  for (const char* setting : {"static=1,bakerays=32", "static=1,bakerays=32,scale=0.25,window=12,rays=12,steps=5"}) {
     SCOPED_TRACE(setting);
     SceneRig rig("courtyard");
     auto t = std::dynamic_pointer_cast<HybridTechnique>(makeTechnique("hybrid", setting));
@@ -306,7 +306,7 @@ TEST(HybridStatic, PlainVtkProps) {
   EXPECT_FALSE(hasBakedAO(actors[2]));
   vtkNew<HybridPass> pass;
   HybridSettings s = staticSettings();
-  s.radius = 1.0;
+  s.common.radius = 1.0;
   pass->SetSettings(s);
   renderer->SetPass(pass);
   window.render();
@@ -361,7 +361,7 @@ TEST(HybridStatic, BadSettingsFailInOneLine) {
     validate(s);
     FAIL() << "bakeRays 0 accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), "hybrid: bakeRays must be in 1..4096, got 0");
+    EXPECT_EQ(std::string(e.what()), "hybrid: bakerays must be an integer in 1..4096, got 0");
   }
   EXPECT_THROW(makeTechnique("hybrid", "static=1,bakerays=5000"), std::invalid_argument);
   StaticBakeOptions o;

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <random>
 
-#include "voxel/BilateralUpsample.h"
+#include "render/BilateralUpsample.h"
 
 using namespace aokit;
 

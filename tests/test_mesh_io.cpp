@@ -6,6 +6,8 @@
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "PackagedMeshes.h"
 #include <unistd.h>
 #include <vtkNew.h>
 #include <vtkSphereSource.h>
@@ -296,7 +298,7 @@ TEST_F(MeshIO, ReadersStayQuiet) {
 }
 
 TEST_F(MeshIO, PackagedRealMeshes) {
-  if (!fs::exists(kPackaged / "bunny00.off")) GTEST_SKIP() << "run models/fetch-meshes.sh to fetch the real meshes";
+  AOKIT_NEED_MESHES(fs::exists(kPackaged / "bunny00.off"), "bunny00.off");
   const TriangleMesh bunny = loadMesh((kPackaged / "bunny00.off").string());
   expectSane(bunny);
   EXPECT_EQ(bunny.positions.size(), 37706u);
@@ -308,7 +310,7 @@ TEST_F(MeshIO, PackagedRealMeshes) {
 
 TEST_F(MeshIO, AssimpTestModels) {
   const fs::path root = kPackaged / "assimp";
-  if (!fs::exists(root)) GTEST_SKIP() << "run models/fetch-meshes.sh to fetch assimp-testmodels";
+  AOKIT_NEED_MESHES(fs::exists(root), "assimp-testmodels");
   // Non-manifold files (spider, Wuson) keep every face: no triangle is lost to half-edge rules.
   const std::pair<const char*, std::size_t> good[] = {
       {"OFF/Cube.off", 12},           {"OFF/Wuson.off", 3732},        {"OBJ/box.obj", 12},
@@ -326,7 +328,7 @@ TEST_F(MeshIO, AssimpTestModels) {
 
 TEST_F(MeshIO, EveryAssimpInvalidFileFails) {
   const fs::path invalid = kPackaged / "assimp" / "invalid";
-  if (!fs::exists(invalid)) GTEST_SKIP() << "run models/fetch-meshes.sh to fetch assimp-testmodels";
+  AOKIT_NEED_MESHES(fs::exists(invalid), "assimp-testmodels");
   int files = 0;
   for (const auto& e : fs::directory_iterator(invalid)) {
     expectFailure(e.path().string());

@@ -42,7 +42,7 @@ TEST(MethodRegistry, ChecksValuesAgainstTheSpecs) {
             "vtkssao: kernel must be an integer in 1..1000, got '3x'");
   EXPECT_EQ(error([] { makeTechnique("vtkssao", "blur=2"); }), "vtkssao: blur must be 0 or 1, got '2'");
   EXPECT_EQ(error([] { makeTechnique("vtkssao", "bias=nan"); }), "vtkssao: bias must be a number in 0..1, got 'nan'");
-  EXPECT_NE(error([] { makeTechnique("vtkssao", "radius=1"); }).find("unknown setting 'radius' (known: kernel, blur, bias)"),
+  EXPECT_NE(error([] { makeTechnique("vtkssao", "r=1"); }).find("unknown setting 'r' (known: kernel, radius, bias, blur)"),
             std::string::npos);
   EXPECT_NE(error([] { makeTechnique("none", "x=1"); }).find("it takes none"), std::string::npos);
   EXPECT_NE(error([] { makeTechnique("nope", ""); }).find("unknown method 'nope' (known: none, vtkssao"),
@@ -65,7 +65,7 @@ TEST(MethodRegistry, EveryBenchSettingBuildsAndEveryKeyHasHelp) {
     const std::string help = settingsHelp(m);
     for (const auto& spec : m.settings) {
       EXPECT_NE(help.find("  " + spec.key + ": "), std::string::npos) << m.name << " " << spec.key;
-      EXPECT_FALSE(spec.description.empty()) << m.name << " " << spec.key;
+      EXPECT_FALSE(spec.help.empty()) << m.name << " " << spec.key;
       EXPECT_FALSE(spec.defaultText.empty()) << m.name << " " << spec.key;
     }
   }

@@ -2,6 +2,8 @@
 // that scene: same triangles, camera and AO radius.
 #include <gtest/gtest.h>
 
+#include "PackagedMeshes.h"
+
 #include <filesystem>
 
 #include "core/Geometry.h"
@@ -22,7 +24,7 @@ bool packagedMeshesPresent() { return fs::exists(fs::path(AOKIT_MODELS_DIR) / "p
 }  // namespace
 
 TEST(ModelFiles, EveryBuiltinHasAFileThatMatchesIt) {
-  if (!packagedMeshesPresent()) GTEST_SKIP() << "run models/fetch-meshes.sh for the packaged meshes";
+  AOKIT_NEED_MESHES(packagedMeshesPresent(), "the packaged meshes");
   for (const auto& name : builtinSceneNames()) {
     const fs::path file = fs::path(AOKIT_MODELS_DIR) / (name + ".json");
     ASSERT_TRUE(fs::exists(file)) << name << " has no scene file in models/";

@@ -166,7 +166,7 @@ TEST(Interleave, RotationsAreTheSeedsSixteenRotationsOfOneSet) {
   ObscuranceSettings s;
   s.samples = 8;
   s.interleave = Interleave::Rotations;
-  const ObscuranceConstants c = makeObscuranceConstants(s, 1.0, Falloff::Binary);
+  const ObscuranceConstants c = makeObscuranceConstants(s, frameContext(s.common, 1.0, Falloff::Binary));
   ASSERT_EQ(c.offsets.size(), 16u * 8u);
   const auto base = warpObscuranceSamples(cachedPoissonDisc(8), Falloff::Binary);
   std::set<long> angles;
@@ -191,7 +191,7 @@ TEST(Interleave, ShiftsStratifyElevationAcrossTheSixteenSets) {
   s.samples = 1;
   for (Interleave mode : {Interleave::Rotations, Interleave::Shifts}) {
     s.interleave = mode;
-    const ObscuranceConstants c = makeObscuranceConstants(s, 1.0, Falloff::Binary);
+    const ObscuranceConstants c = makeObscuranceConstants(s, frameContext(s.common, 1.0, Falloff::Binary));
     std::set<int> strata;
     for (const auto& o : c.offsets) {
       const double cosTheta = o.z / glm::length(o);
@@ -205,9 +205,9 @@ TEST(ObscuranceSettings, ConstantsResolveRadiusFalloffAndShape) {
   ObscuranceSettings s;
   s.samples = 12;
   s.pointsPerRay = 3;
-  s.resolutionScale = 1.0;
+  s.common.scale = AOScale::Full;
   s.bias = 0.1;
-  ObscuranceConstants c = makeObscuranceConstants(s, 2.0, Falloff::Sqrt);
+  ObscuranceConstants c = makeObscuranceConstants(s, frameContext(s.common, 2.0, Falloff::Sqrt));
   EXPECT_FLOAT_EQ(c.radius, 2.0f);
   EXPECT_FLOAT_EQ(c.bias, 0.2f);
   EXPECT_EQ(c.falloff, Falloff::Sqrt);
@@ -218,21 +218,21 @@ TEST(ObscuranceSettings, ConstantsResolveRadiusFalloffAndShape) {
   EXPECT_NE(d.find("#define OBS_POINTS_PER_RAY 3\n"), std::string::npos) << d;
   EXPECT_NE(d.find("#define OBS_DOWNSAMPLE 1\n"), std::string::npos) << d;
 
-  s.radius = 0.5;
-  s.falloff = Falloff::Wendland;
-  s.resolutionScale = 0.5;
+  s.common.radius = 0.5;
+  s.common.falloff = Falloff::Wendland;
+  s.common.scale = AOScale::Half;
   s.interleave = Interleave::Off;
-  c = makeObscuranceConstants(s, 2.0, Falloff::Sqrt);
+  c = makeObscuranceConstants(s, frameContext(s.common, 2.0, Falloff::Sqrt));
   EXPECT_FLOAT_EQ(c.radius, 0.5f);  // the setting wins over the scene
   EXPECT_EQ(c.falloff, Falloff::Wendland);
   EXPECT_EQ(c.downsample, 2);
   EXPECT_EQ(c.offsets.size(), 12u);  // one set, no interleave
   // Uniform values never reach the defines: changing them cannot rebuild a program.
   ObscuranceSettings t = s;
-  t.radius = 3.0;
+  t.common.radius = 3.0;
   t.bias = 0.01;
-  t.filterTolerance = 0.2;
-  EXPECT_EQ(makeObscuranceConstants(t, 5.0, Falloff::Binary).defines(), c.defines());
+  t.common.upsample.depthTolerance = 0.2;
+  EXPECT_EQ(makeObscuranceConstants(t, frameContext(t.common, 5.0, Falloff::Binary)).defines(), c.defines());
 }
 
 TEST(ObscuranceSettings, BadSettingsGiveOneLineErrors) {
@@ -253,23 +253,23 @@ TEST(ObscuranceSettings, BadSettingsGiveOneLineErrors) {
   s.samples = 65;
   expectError(s, "samples");
   s = {};
-  s.radius = -1.0;
+  s.common.radius = -1.0;
   expectError(s, "radius");
   s = {};
-  s.radius = NAN;
+  s.common.radius = NAN;
   expectError(s, "radius");
   s = {};
   s.pointsPerRay = 0;
-  expectError(s, "pointsPerRay");
+  expectError(s, "m");
   s = {};
-  s.resolutionScale = 0.25;
-  expectError(s, "resolutionScale");
+  s.common.scale = static_cast<AOScale>(3);
+  expectError(s, "scale");
   s = {};
   s.bias = -0.1;
   expectError(s, "bias");
   s = {};
-  s.filterTolerance = 0.0;
-  expectError(s, "filterTolerance");
+  s.common.upsample.depthTolerance = 0.0;
+  expectError(s, "tolerance");
   s = {};
   s.guard = -0.1;
   expectError(s, "guard");
@@ -277,7 +277,7 @@ TEST(ObscuranceSettings, BadSettingsGiveOneLineErrors) {
   s.guard = 0.6;
   expectError(s, "guard");
   // No radius anywhere: nothing to size the rays with.
-  EXPECT_THROW(makeObscuranceConstants(ObscuranceSettings{}, 0.0, Falloff::Binary), std::invalid_argument);
+  EXPECT_THROW(makeObscuranceConstants(ObscuranceSettings{}, FrameContext{0.0, Falloff::Binary}), std::invalid_argument);
 }
 
 TEST(ObscuranceSettings, RegistryRejectsBadValuesByName) {
@@ -292,7 +292,7 @@ TEST(ObscuranceSettings, RegistryRejectsBadValuesByName) {
   EXPECT_NE(message("samples=0").find("samples"), std::string::npos);
   EXPECT_NE(message("radius=-2").find("radius"), std::string::npos);
   EXPECT_NE(message("m=5").find("m must be"), std::string::npos);
-  EXPECT_NE(message("scale=0.7").find("scale must be 1, 0.5"), std::string::npos);
+  EXPECT_NE(message("scale=0.7").find("scale must be one of 1, 0.5, 0.25"), std::string::npos);
   EXPECT_NE(message("interleave=spiral").find("interleave"), std::string::npos);
   EXPECT_NE(message("falloff=cubic").find("falloff"), std::string::npos);
   EXPECT_NE(message("view=xray").find("view"), std::string::npos);

@@ -4,6 +4,8 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+
+#include "PackagedMeshes.h"
 #include <unistd.h>
 
 #include "core/Geometry.h"
@@ -95,8 +97,7 @@ TEST_F(SceneFile, ShippedFilesMatchTheBuiltins) {
 }
 
 TEST_F(SceneFile, BunnyExample) {
-  if (!fs::exists(kModels / "packaged" / "bunny00.off"))
-    GTEST_SKIP() << "run models/fetch-meshes.sh to fetch bunny00.off";
+  AOKIT_NEED_MESHES(fs::exists(kModels / "packaged" / "bunny00.off"), "bunny00.off");
   Scene s = loadSceneFile((kModels / "bunny.json").string());
   const auto inst = collectInstances(*s.root);
   ASSERT_EQ(inst.size(), 2u);

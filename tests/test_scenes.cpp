@@ -7,6 +7,8 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
+#include "PackagedMeshes.h"
+
 #include "core/Geometry.h"
 #include "core/NodeVisitor.h"
 #include "core/Transform.h"
@@ -314,7 +316,7 @@ TEST(BuiltinScenes, AnimatedFrameZeroIsTheInitialState) {
 }
 
 TEST(BuiltinScenes, PackagedMeshesStandOnTheFloor) {
-  if (!packagedMeshesPresent()) GTEST_SKIP() << "run models/fetch-meshes.sh to fetch bunny00.off and fandisk.off";
+  AOKIT_NEED_MESHES(packagedMeshesPresent(), "bunny00.off and fandisk.off");
   for (const char* name : {"bunny", "fandisk"}) {
     SCOPED_TRACE(name);
     Scene s = makeBuiltinScene(name, sourceTreeModels());

@@ -143,10 +143,10 @@ TEST(HybridSettings, BadValuesGiveOneLineErrorsNamingTheField) {
   };
   HybridSettings s;
   s.rays = 0;
-  expectError(s, "rays must be in 1..256, got 0");
+  expectError(s, "hybrid: rays must be an integer in 1..256, got 0");
   s = {};
   s.steps = 0;
-  expectError(s, "steps must be in 1..256, got 0");
+  expectError(s, "hybrid: steps must be an integer in 1..256, got 0");
   s = {};
   s.gridResolution = 1024;  // 128 MiB > 64 MiB default budget
   expectError(s, "a 1024^3 grid needs 128 MiB, over the memory budget of 64 MiB");
@@ -154,26 +154,25 @@ TEST(HybridSettings, BadValuesGiveOneLineErrorsNamingTheField) {
   EXPECT_NO_THROW(validate(s));
   s = {};
   s.gridResolution = 32;
-  expectError(s, "gridResolution");
+  expectError(s, "res must be");
   s = {};
   s.spread = 0.0;
-  expectError(s, "spread");
+  expectError(s, "spread must be");
   s = {};
   s.normalOffset = std::nan("");
-  expectError(s, "normalOffset");
+  expectError(s, "offset must be");
   s = {};
-  s.region = RegionMode::Box;  // no box given
-  expectError(s, "regionBox");
-  s.regionBox.extend(glm::dvec3(0.0));
-  s.regionBox.extend(glm::dvec3(1.0, 1.0, 0.0));  // flat
-  expectError(s, "regionBox");
+  s.regionBox.max.x = 1.0;  // a box given in part
+  expectError(s, "a fixed region needs all of bx0, by0, bz0, bx1, by1, bz1");
+  s.regionBox = Bounds{glm::dvec3(0.0), glm::dvec3(1.0, 1.0, 0.0)};  // flat
+  expectError(s, "a fixed region needs all of");
   s = {};
-  s.filterSize = -1;
-  expectError(s, "filterSize");
+  s.common.upsample.window = -1;
+  expectError(s, "window must be");
   s = {};
-  s.aoSupport = 0.0;
-  expectError(s, "aoSupport");
+  s.common.upsample.aoSupport = 0.0;
+  expectError(s, "ha must be");
   s = {};
   s.memoryBudgetMiB = 0.0;
-  expectError(s, "memoryBudgetMiB");
+  expectError(s, "budget must be");
 }

@@ -130,7 +130,6 @@ TEST(VoxelRegion, FixedBoxAndEmptyCases) {
   const ViewFrustum f = frontView();
   HybridSettings s;
   s.snapToLattice = false;
-  s.region = RegionMode::Box;
   s.regionBox = box({-2, 2, -2}, {2, 6, 2});
   const std::vector<Bounds> casters = {box({-1, 4, -1}, {1, 5, 1}), box({10, 10, 10}, {11, 11, 11}), Bounds{}};
   const VoxelRegion r = computeVoxelRegion(casters, f, 1.0, s);

@@ -142,7 +142,7 @@ TEST(StaticDynamic, BakedPlusDynamicMatchesTheReference) {
   for (std::size_t i : plan.allCasters) all.push_back(instances[i]);
   const VoxelGrid dynamicGrid = voxelizeInstances(dyn, plan.region.frame, VoxelizeMethod::ThreeAxis, true);
   const VoxelGrid fullGrid = voxelizeInstances(all, plan.region.frame, VoxelizeMethod::ThreeAxis, true);
-  const HybridMarchConstants c = makeHybridMarchConstants(hs, 1.5, Falloff::Binary, plan.region.frame);
+  const HybridMarchConstants c = makeHybridMarchConstants(hs, frameContext(hs.common, 1.5, Falloff::Binary), plan.region.frame);
 
   SurfaceSamples pts;
   pts.resize(40, 1);
@@ -294,7 +294,6 @@ TEST(StaticDynamic, BoxModeSplitsTheBoxsCasters) {
   for (const auto& inst : instances) bounds.push_back(inst.geometry->mesh()->bounds().transformed(inst.world));
   const ViewFrustum f = ViewFrustum::covering(s.scene.camera, 4.0 / 3.0, worldBounds(*s.scene.root));
   HybridSettings hs;
-  hs.region = RegionMode::Box;
   hs.regionBox = Bounds{{-1.5, -1.5, -0.5}, {1.5, 1.5, 2.5}};  // the sphere and the floor, not the box
   const StaticDynamicPlan plan = planStaticDynamic(bounds, {true, true, false}, f, 1.5, hs);
   ASSERT_FALSE(plan.empty);

@@ -1,43 +1,29 @@
 #pragma once
-// Baseline: VTK's own vtkSSAOPass as an AOScene technique, its radius and bias derived from the
-// scene's AO radius R, so the bench compares it with our methods on the same terms.
-#include <vtkSmartPointer.h>
+// Baseline: VTK's own vtkSSAOPass as an AOScene technique, inside a TimedPass that times it as one
+// stage; its radius and bias derived from the scene's AO radius R.
+#include "baseline/VtkSSAOSettings.h"
+#include "render/PassTechnique.h"
 
-#include "core/AOTechnique.h"
-
-class vtkRenderPass;
 class vtkSSAOPass;
 
 namespace aokit {
 
-class TimedPass;
-
-struct VtkSSAOSettings {
-  unsigned kernelSize = 32;  //!< samples per pixel, 1..1000 (VTK's default 32)
-  double radius = 0.0;       //!< world units; 0 = the scene's AO radius R
-  double biasFraction = 0.01;  //!< depth bias as a fraction of the radius (0.01 R as in the canonical figures)
-  bool blur = false;         //!< VTK's 3x3 blur of the AO term
-};
-
-class VtkSSAOTechnique : public AOTechnique {
+class VtkSSAOTechnique : public PassTechnique {
  public:
+  // Throws std::invalid_argument (one line) on bad settings.
   explicit VtkSSAOTechnique(VtkSSAOSettings settings = {});
-  std::string name() const override;
-  void attach(vtkRenderer* renderer, AOScene& scene) override;
-  void detach(vtkRenderer* renderer) override;
-  void update(vtkRenderer* renderer, AOScene& scene) override;
-  std::size_t memoryBytes() const override;
-  void setStageTiming(bool on) override;
-  StageTimes stageTimes() override;
-
+  std::string name() const override { return "vtkssao"; }
   const VtkSSAOSettings& settings() const { return settings_; }
+
+ protected:
+  vtkSmartPointer<vtkRenderPass> makePass() override;
+  void onUpdate(vtkRenderer* renderer, AOScene& scene) override;
+  void onDetach(vtkRenderer* renderer) override;
+  std::size_t extraMemoryBytes() const override;
 
  private:
   VtkSSAOSettings settings_;
-  vtkSmartPointer<vtkSSAOPass> pass_;
-  vtkSmartPointer<TimedPass> timed_;  // pass_ inside one GPU-timed stage
-  vtkSmartPointer<vtkRenderPass> previous_;
-  bool timing_ = false;
+  vtkSSAOPass* ssao_ = nullptr;  // inside the installed TimedPass
   int width_ = 0, height_ = 0;
 };
 

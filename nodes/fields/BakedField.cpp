@@ -1,11 +1,11 @@
 #include "fields/BakedField.h"
 
-#include "fields/ContentHash.h"
 
 namespace aokit {
 
-FieldBakeInfo makeBakeInfo(const FieldSettings& s, int resolution, double radius, Falloff falloff,
-                           const TriangleMesh& mesh) {
+FieldBakeInfo makeBakeInfo(const FieldBakeSettings& s, int resolution, double radius, Falloff falloff,
+                           const BakeMesh& input) {
+  const TriangleMesh& mesh = input.mesh();
   FieldBakeInfo i;
   i.kind = s.kind;
   i.resolution = resolution;
@@ -25,7 +25,7 @@ FieldBakeInfo makeBakeInfo(const FieldSettings& s, int resolution, double radius
   }
   i.selfOcclusionRays = s.selfOcclusion ? s.selfOcclusionRays : 0;
   i.seed = s.seed;
-  i.meshHash = meshContentHash(mesh);
+  i.meshHash = input.hash();
   i.vertexCount = static_cast<std::uint32_t>(mesh.positions.size());
   i.triangleCount = static_cast<std::uint32_t>(mesh.triangles.size());
   return i;

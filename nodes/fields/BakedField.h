@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "core/TriangleMesh.h"
-#include "fields/FieldSettings.h"
+#include "fields/BakeMesh.h"
+#include "fields/FieldBakeSettings.h"
 #include "fields/GridField.h"
 #include "fields/RadialField.h"
 
@@ -42,8 +43,8 @@ struct BakedField {
 };
 
 // The bake settings of `s` for this mesh, resolution and R (meshHash and counts filled in).
-FieldBakeInfo makeBakeInfo(const FieldSettings& s, int resolution, double radius, Falloff falloff,
-                           const TriangleMesh& mesh);
+FieldBakeInfo makeBakeInfo(const FieldBakeSettings& s, int resolution, double radius, Falloff falloff,
+                           const BakeMesh& mesh);
 
 // Field bytes for a kind and resolution (no self-occlusion): the figure the node reports.
 std::size_t fieldMemoryBytes(FieldKind kind, int resolution);

@@ -11,13 +11,13 @@
 
 namespace aokit {
 
-BakedField bakeField(const TriangleMesh& mesh, const FieldSettings& settings, double radius, Falloff falloff,
+BakedField bakeField(const BakeMesh& input, const FieldBakeSettings& settings, double radius, Falloff falloff,
                      const std::function<void(double)>& progress) {
   validate(settings);
   if (!(radius > 0.0) || !std::isfinite(radius)) throw std::invalid_argument("field bake: radius must be positive and finite");
-  mesh.validate();
+  const TriangleMesh& mesh = input.mesh();
   const auto start = std::chrono::steady_clock::now();
-  FieldSettings s = settings;
+  FieldBakeSettings s = settings;
   s.resolution = resolveFieldResolution(settings, mesh, radius);
 
   // Progress: the field takes most of the time; self-occlusion the last part.
@@ -28,13 +28,13 @@ BakedField bakeField(const TriangleMesh& mesh, const FieldSettings& settings, do
     };
   };
   BakedField out;
-  out.info = makeBakeInfo(s, s.resolution, radius, falloff, mesh);
+  out.info = makeBakeInfo(s, s.resolution, radius, falloff, input);
   if (s.kind == FieldKind::Cube)
-    out.radial = bakeRadialField(mesh, s, radius, falloff, part(0.0, fieldShare));
+    out.radial = bakeRadialField(input, s, radius, falloff, part(0.0, fieldShare));
   else
-    out.grid = bakeGridField(mesh, s, radius, falloff, part(0.0, fieldShare));
+    out.grid = bakeGridField(input, s, radius, falloff, part(0.0, fieldShare));
   if (s.selfOcclusion)
-    out.vertexOcclusion = bakeVertexOcclusion(mesh, radius, falloff, s.selfOcclusionRays, s.threads, s.seed,
+    out.vertexOcclusion = bakeVertexOcclusion(input, radius, falloff, s.selfOcclusionRays, s.threads, s.seed,
                                               part(fieldShare, 1.0 - fieldShare));
   out.info.bakeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

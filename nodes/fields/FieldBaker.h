@@ -3,7 +3,7 @@
 // chosen kind and (when asked) the per-vertex self-occlusion, and records the bake settings.
 #include <functional>
 
-#include "core/TriangleMesh.h"
+#include "fields/BakeMesh.h"
 #include "fields/BakedField.h"
 
 namespace aokit {
@@ -11,7 +11,7 @@ namespace aokit {
 // radius > 0 and falloff are the scene's (in the mesh's own units; a scaled instance needs R
 // divided by its scale). progress gets the fraction done and may throw to cancel (Progress.h).
 // Throws std::invalid_argument on bad settings or input, std::runtime_error on Embree errors.
-BakedField bakeField(const TriangleMesh& mesh, const FieldSettings& settings, double radius, Falloff falloff,
+BakedField bakeField(const BakeMesh& mesh, const FieldBakeSettings& settings, double radius, Falloff falloff,
                      const std::function<void(double)>& progress = {});
 
 }  // namespace aokit

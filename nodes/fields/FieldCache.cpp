@@ -58,10 +58,10 @@ std::string FieldCache::directory() const {
   return d;
 }
 
-std::string FieldCache::pathFor(const TriangleMesh& mesh, const FieldSettings& settings, double radius,
+std::string FieldCache::pathFor(const BakeMesh& mesh, const FieldBakeSettings& settings, double radius,
                                 Falloff falloff) const {
   validate(settings);
-  const int resolution = resolveFieldResolution(settings, mesh, radius);
+  const int resolution = resolveFieldResolution(settings, mesh.mesh(), radius);
   const FieldBakeInfo info = makeBakeInfo(settings, resolution, radius, falloff, mesh);
   char name[64];
   std::snprintf(name, sizeof(name), "%s-%016llx.aof", fieldKindName(settings.kind).c_str(),
@@ -69,7 +69,7 @@ std::string FieldCache::pathFor(const TriangleMesh& mesh, const FieldSettings& s
   return (std::filesystem::path(directory()) / name).string();
 }
 
-CachedField FieldCache::getOrBake(const TriangleMesh& mesh, const FieldSettings& settings, double radius,
+CachedField FieldCache::getOrBake(const BakeMesh& mesh, const FieldBakeSettings& settings, double radius,
                                   Falloff falloff, const std::function<void(double)>& progress) const {
   CachedField out;
   out.path = pathFor(mesh, settings, radius, falloff);
@@ -77,7 +77,7 @@ CachedField FieldCache::getOrBake(const TriangleMesh& mesh, const FieldSettings&
   if (std::filesystem::exists(out.path, ec)) {
     try {
       BakedField f = readFieldFile(out.path);
-      checkFieldMatches(f.info, meshContentHash(mesh), radius, falloff, out.path);
+      checkFieldMatches(f.info, mesh.hash(), radius, falloff, out.path);
       out.field = std::move(f);
       out.hit = true;
       return out;

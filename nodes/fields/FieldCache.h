@@ -9,7 +9,7 @@
 #include <functional>
 #include <string>
 
-#include "core/TriangleMesh.h"
+#include "fields/BakeMesh.h"
 #include "fields/BakedField.h"
 
 namespace aokit {
@@ -32,10 +32,10 @@ class FieldCache {
   static std::string defaultDirectory();
 
   // The cache file for these bake settings (settings.resolution resolved by the caller or auto).
-  std::string pathFor(const TriangleMesh& mesh, const FieldSettings& settings, double radius, Falloff falloff) const;
+  std::string pathFor(const BakeMesh& mesh, const FieldBakeSettings& settings, double radius, Falloff falloff) const;
 
   // Reads the cached field, or bakes it (bakeField) and stores it.
-  CachedField getOrBake(const TriangleMesh& mesh, const FieldSettings& settings, double radius, Falloff falloff,
+  CachedField getOrBake(const BakeMesh& mesh, const FieldBakeSettings& settings, double radius, Falloff falloff,
                         const std::function<void(double)>& progress = {}) const;
 
  private:

@@ -121,9 +121,26 @@ OccluderGpuData packOccluders(const std::vector<std::shared_ptr<const BakedField
   }
   d.cubeWords = (d.cubeCount + 31) / 32;
   d.words = std::max(1, d.cubeWords + (d.occluderCount - d.cubeCount + 31) / 32);
-  if (d.floats.empty()) d.floats.assign(16, 0.0f);
-  if (d.ints.empty()) d.ints.assign(4, 0u);
+  if (d.floats.empty()) d.floats.assign(kOccluderFloatsPerOccluder, 0.0f);
+  if (d.ints.empty()) d.ints.assign(kOccluderIntsPerOccluder, 0u);
   return d;
+}
+
+OccluderRecord occluderRecord(const OccluderGpuData& d, int slot) {
+  const std::size_t k = static_cast<std::size_t>(slot);
+  OccluderRecord r;
+  r.worldToField = &d.floats[k * kOccluderFloatsPerOccluder];
+  r.sphere = r.worldToField + 12;
+  r.instanceId = d.ints[k * kOccluderIntsPerOccluder];
+  r.field = d.ints[k * kOccluderIntsPerOccluder + 1];
+  return r;
+}
+
+FieldRecord fieldRecord(const FieldGpuData& d, std::uint32_t field) {
+  FieldRecord r;
+  for (int i = 0; i < 4; ++i) r.info[i] = static_cast<int>(d.fieldInts[field * 4 + i]);
+  r.floats = &d.fieldFloats[field * kFieldFloatsPerField];
+  return r;
 }
 
 }  // namespace aokit

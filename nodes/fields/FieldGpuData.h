@@ -36,7 +36,9 @@
 
 namespace aokit {
 
-constexpr int kFieldFloatsPerField = 12;  // 3 RGBA texels
+constexpr int kFieldFloatsPerField = 12;        // 3 RGBA texels
+constexpr int kOccluderFloatsPerOccluder = 16;  // 4 RGBA texels
+constexpr int kOccluderIntsPerOccluder = 4;     // 1 RGBA texel
 
 struct FieldGpuData {
   bool hasCube = false;
@@ -57,6 +59,21 @@ struct OccluderGpuData {
   std::vector<float> floats;
   std::vector<std::uint32_t> ints;
 };
+
+// Occluder slot k as the draws read it back from the packed arrays.
+struct OccluderRecord {
+  const float* worldToField = nullptr;  // rows 0..2 of M, 12 floats (the first 3 RGBA texels)
+  const float* sphere = nullptr;        // the influence sphere: centre xyz, radius w, world space
+  std::uint32_t instanceId = 0, field = 0;
+};
+OccluderRecord occluderRecord(const OccluderGpuData& d, int slot);
+
+// Field f's per-field data as the occluder draws take it in uniforms.
+struct FieldRecord {
+  int info[4] = {};               // kind (0 cube, 1 grid6, 2 grid4), N, base in texels4, base in texels3
+  const float* floats = nullptr;  // kFieldFloatsPerField floats (the field's 3 RGBA texels)
+};
+FieldRecord fieldRecord(const FieldGpuData& d, std::uint32_t field);
 
 struct InfluenceSphere {
   glm::dvec3 centre{0.0};

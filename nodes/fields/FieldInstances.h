@@ -28,7 +28,7 @@
 
 #include "core/NodeVisitor.h"
 #include "core/TriangleMesh.h"
-#include "fields/FieldSettings.h"
+#include "fields/FieldBakeSettings.h"
 
 namespace aokit {
 

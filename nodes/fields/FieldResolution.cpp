@@ -8,7 +8,7 @@
 
 namespace aokit {
 
-int autoFieldResolution(const FieldSettings& s, const TriangleMesh& mesh, double radius) {
+int autoFieldResolution(const FieldBakeSettings& s, const TriangleMesh& mesh, double radius) {
   if (!(radius > 0.0) || !std::isfinite(radius)) throw std::invalid_argument("field resolution: radius must be positive");
   if (mesh.positions.empty()) throw std::invalid_argument("field resolution: empty mesh");
   double n = 0.0;
@@ -25,7 +25,7 @@ int autoFieldResolution(const FieldSettings& s, const TriangleMesh& mesh, double
   return static_cast<int>(std::clamp(n, static_cast<double>(kAutoResolutionMin), static_cast<double>(kAutoResolutionMax)));
 }
 
-int resolveFieldResolution(const FieldSettings& s, const TriangleMesh& mesh, double radius) {
+int resolveFieldResolution(const FieldBakeSettings& s, const TriangleMesh& mesh, double radius) {
   return s.resolution > 0 ? s.resolution : autoFieldResolution(s, mesh, radius);
 }
 

@@ -10,7 +10,7 @@
 // Both clamped to [8, 64]: below 8 a cube face or grid has too few texels to interpolate; 64 bounds
 // the memory (cube 732 KB, grid6 6.3 MB).
 #include "core/TriangleMesh.h"
-#include "fields/FieldSettings.h"
+#include "fields/FieldBakeSettings.h"
 
 namespace aokit {
 
@@ -18,9 +18,9 @@ constexpr int kAutoResolutionMin = 8;
 constexpr int kAutoResolutionMax = 64;
 
 // Throws std::invalid_argument for a non-positive radius or an empty mesh.
-int autoFieldResolution(const FieldSettings& s, const TriangleMesh& mesh, double radius);
+int autoFieldResolution(const FieldBakeSettings& s, const TriangleMesh& mesh, double radius);
 
 // s.resolution when set, else autoFieldResolution.
-int resolveFieldResolution(const FieldSettings& s, const TriangleMesh& mesh, double radius);
+int resolveFieldResolution(const FieldBakeSettings& s, const TriangleMesh& mesh, double radius);
 
 }  // namespace aokit

@@ -8,22 +8,16 @@
 namespace aokit {
 
 OccluderSample evaluateOccluder(const BakedField& field, const glm::dmat4& occluderToWorld, const glm::dvec3& p,
-                                const glm::dvec3& n, const FieldPassSettings& s) {
+                                const glm::dvec3& n, const FieldEvalSettings& s) {
   OccluderSample out;
   if (field.info.kind == FieldKind::Cube) {
-    RadialEvalOptions o;
-    o.insideExponent = s.insideExponent;
-    o.insideOcclusion = s.insideOcclusion;
-    const RadialSample r = evaluateRadialField(field.radial, occluderToWorld, p, n, o);
+    const RadialSample r = evaluateRadialField(field.radial, occluderToWorld, p, n, s);
     out.occlusion = r.occlusion;
     out.solidAngle = r.solidAngle;
     out.direction = r.direction;
     out.capOcclusion = r.capOcclusion;
   } else {
-    GridEvalOptions o;
-    o.bias = s.bias;
-    o.weights = s.gridWeights;
-    out.occlusion = evaluateGridField(field.grid, occluderToWorld, glm::dmat4(1.0), p, n, o);
+    out.occlusion = evaluateGridField(field.grid, occluderToWorld, glm::dmat4(1.0), p, n, s);
     out.direction = n;  // no cap: clipOccluderCone makes it the cap around n of its occlusion
   }
   return out;
@@ -31,7 +25,7 @@ OccluderSample evaluateOccluder(const BakedField& field, const glm::dmat4& occlu
 
 double evaluateFieldScene(const std::vector<std::shared_ptr<const BakedField>>& fields,
                           const std::vector<FieldOccluder>& occluders, const glm::dvec3& p, const glm::dvec3& n,
-                          std::uint32_t pixelId, const FieldPassSettings& s) {
+                          std::uint32_t pixelId, const FieldEvalSettings& s) {
   std::vector<OccluderSample> samples;
   std::vector<double> occlusions;
   for (const FieldOccluder& o : occluders)

@@ -20,7 +20,7 @@
 #include <glm/glm.hpp>
 
 #include "fields/BakedField.h"
-#include "fields/FieldPassSettings.h"
+#include "fields/FieldEvalSettings.h"
 #include "fields/OccluderCombine.h"
 
 namespace aokit {
@@ -34,11 +34,11 @@ struct FieldOccluder {
 // One occluder's contribution at p (world), for combining: A_k after the fades, and for cube
 // fields the cap (Omega, Upsilon in world space, T_LUT value).
 OccluderSample evaluateOccluder(const BakedField& field, const glm::dmat4& occluderToWorld, const glm::dvec3& p,
-                                const glm::dvec3& n, const FieldPassSettings& settings);
+                                const glm::dvec3& n, const FieldEvalSettings& settings);
 
 // The combined occlusion in [0, 1] at p, n of a pixel of instance `pixelId`.
 double evaluateFieldScene(const std::vector<std::shared_ptr<const BakedField>>& fields,
                           const std::vector<FieldOccluder>& occluders, const glm::dvec3& p, const glm::dvec3& n,
-                          std::uint32_t pixelId, const FieldPassSettings& settings);
+                          std::uint32_t pixelId, const FieldEvalSettings& settings);
 
 }  // namespace aokit

@@ -5,43 +5,28 @@
 
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
-#include <vtkOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 
 #include "core/AOScene.h"
 #include "core/Geometry.h"
 #include "core/Scene.h"
-#include "fields/ContentHash.h"
 #include "fields/FieldBaker.h"
 #include "fields/FieldCache.h"
 #include "fields/FieldFile.h"
 #include "fields/HorizonLimit.h"
 #include "render/ActorKeys.h"
 #include "render/BakedAO.h"
+#include "render/FrameContext.h"
 
 namespace aokit {
 
-void validate(const FieldTechniqueSettings& s) {
-  validate(s.field);
-  validate(s.pass);
-}
-
 namespace {
-FieldPassSettings passSettings(const FieldTechniqueSettings& s) {
-  FieldPassSettings p = s.pass;
-  const FieldPassSettings constants = passSettingsFrom(s.field);
-  p.combine = constants.combine;
-  p.insideExponent = constants.insideExponent;
-  p.insideOcclusion = constants.insideOcclusion;
-  p.bias = constants.bias;
-  p.gridWeights = constants.gridWeights;
-  return p;
-}
-
 bool casts(const GeometryInstance& i) { return i.geometry && i.geometry->mesh() && !i.geometry->mesh()->empty(); }
 }  // namespace
 
-FieldTechnique::FieldTechnique(FieldTechniqueSettings s) : settings_(std::move(s)) { validate(settings_); }
+FieldTechnique::FieldTechnique(FieldSettings s) : settings_(std::move(s)) { validate(settings_); }
+
+FieldPass* FieldTechnique::pass() const { return FieldPass::SafeDownCast(installedPass()); }
 
 std::size_t FieldTechnique::fieldBytes() const {
   std::size_t bytes = 0;
@@ -50,9 +35,10 @@ std::size_t FieldTechnique::fieldBytes() const {
 }
 
 void FieldTechnique::prepare(AOScene& scene, const std::function<void(double)>& progress) {
-  radius_ = settings_.field.radius > 0.0 ? settings_.field.radius : scene.aoRadius();
-  falloff_ = settings_.field.falloff ? *settings_.field.falloff : scene.falloff();
-  plan(scene, collectInstances(scene, kCastsAO), progress);
+  const FrameContext context = frameContext(settings_.common, scene.aoRadius(), scene.falloff());
+  radius_ = context.radius;
+  falloff_ = context.falloff;
+  plan(collectInstances(scene, kCastsAO), progress);
   revision_ = sceneRevision(scene);
 }
 
@@ -60,16 +46,16 @@ std::shared_ptr<const BakedField> FieldTechnique::obtain(const PlannedField& f,
                                                          const std::function<void(double)>& progress) {
   const auto key = std::make_tuple(f.mesh.get(), f.radius, f.file);
   if (auto it = baked_.find(key); it != baked_.end()) return it->second.second;
-  FieldSettings bakeSettings = settings_.field;
+  FieldBakeSettings bakeSettings = settings_.bake;
   bakeSettings.kind = f.kind;
-  bakeSettings.combine = FieldCombine::Multiply;  // a run-time constant, not baked (grids take no cones)
+  const BakeMesh mesh(*f.mesh);  // validated and hashed once, one Embree scene for all its bakes
   std::shared_ptr<BakedField> field;
   if (!f.file.empty()) {
     field = std::make_shared<BakedField>(readFieldFile(f.file));
-    checkFieldMatches(field->info, meshContentHash(*f.mesh), f.radius, falloff_, f.file);
+    checkFieldMatches(field->info, mesh.hash(), f.radius, falloff_, f.file);
     ++report_.fromFile;
   } else if (settings_.cache) {
-    CachedField c = FieldCache(settings_.cacheDirectory).getOrBake(*f.mesh, bakeSettings, f.radius, falloff_, progress);
+    CachedField c = FieldCache(settings_.cacheDirectory).getOrBake(mesh, bakeSettings, f.radius, falloff_, progress);
     if (!c.warning.empty()) report_.warnings.push_back(c.warning);
     if (c.hit) {
       ++report_.fromCache;
@@ -79,7 +65,7 @@ std::shared_ptr<const BakedField> FieldTechnique::obtain(const PlannedField& f,
     }
     field = std::make_shared<BakedField>(std::move(c.field));
   } else {
-    field = std::make_shared<BakedField>(bakeField(*f.mesh, bakeSettings, f.radius, falloff_, progress));
+    field = std::make_shared<BakedField>(bakeField(mesh, bakeSettings, f.radius, falloff_, progress));
     ++report_.baked;
     report_.bakeSeconds += field->info.bakeSeconds;
   }
@@ -88,9 +74,8 @@ std::shared_ptr<const BakedField> FieldTechnique::obtain(const PlannedField& f,
   return field;
 }
 
-void FieldTechnique::plan(AOScene&, const std::vector<GeometryInstance>& instances,
-                          const std::function<void(double)>& progress) {
-  plan_ = planFields(instances, radius_, settings_.autoKind ? std::nullopt : std::optional<FieldKind>(settings_.field.kind));
+void FieldTechnique::plan(const std::vector<GeometryInstance>& instances, const std::function<void(double)>& progress) {
+  plan_ = planFields(instances, radius_, settings_.kind);
   report_ = {};
   report_.fields = static_cast<int>(plan_.fields.size());
   report_.occluders = static_cast<int>(plan_.occluders.size());
@@ -117,9 +102,9 @@ void FieldTechnique::plan(AOScene&, const std::vector<GeometryInstance>& instanc
     byInstance_[inst.id] = k++;
   }
   if (!place(instances)) throw std::logic_error("field: planned occluders do not place");
-  if (pass_) {
-    pass_->SetFields(fields_);
-    pass_->SetOccluders(occluders_);
+  if (FieldPass* p = pass()) {
+    p->SetFields(fields_);
+    p->SetOccluders(occluders_);
   }
 }
 
@@ -141,25 +126,22 @@ bool FieldTechnique::place(const std::vector<GeometryInstance>& instances) {
   return true;
 }
 
-void FieldTechnique::attach(vtkRenderer* renderer, AOScene& scene) {
-  previous_ = renderer->GetPass();
-  pass_ = vtkSmartPointer<FieldPass>::New();
-  pass_->SetSettings(passSettings(settings_));
-  pass_->SetStageTiming(timing_);
-  pass_->SetFields(fields_);
-  pass_->SetOccluders(occluders_);
-  pass_->SetSceneRadius(radius_);
-  update(renderer, scene);
-  applySelfOcclusion(renderer);
-  renderer->SetPass(pass_);
+vtkSmartPointer<vtkRenderPass> FieldTechnique::makePass() {
+  auto p = vtkSmartPointer<FieldPass>::New();
+  p->SetSettings(settings_);
+  p->SetFields(fields_);
+  p->SetOccluders(occluders_);
+  return p;
 }
+
+void FieldTechnique::onAttach(vtkRenderer* renderer, AOScene&) { applySelfOcclusion(renderer); }
 
 void FieldTechnique::applySelfOcclusion(vtkRenderer* renderer) {
   // Instance id -> its field's per-vertex self-occlusion.
   std::map<std::uint32_t, const std::vector<float>*> byId;
   for (const FieldOccluder& o : occluders_)
     if (!fields_[o.field]->vertexOcclusion.empty()) byId[o.instanceId] = &fields_[o.field]->vertexOcclusion;
-  if (pass_) pass_->SetBakedAO(!byId.empty());
+  if (FieldPass* p = pass()) p->SetBakedAO(!byId.empty());
   if (byId.empty()) return;
   vtkActorCollection* actors = renderer->GetActors();
   actors->InitTraversal();
@@ -177,24 +159,21 @@ void FieldTechnique::clearSelfOcclusion() {
   selfShaded_.clear();
 }
 
-void FieldTechnique::update(vtkRenderer* renderer, AOScene& scene) {
-  if (!pass_) return;
-  const double radius = settings_.field.radius > 0.0 ? settings_.field.radius : scene.aoRadius();
-  const Falloff falloff = settings_.field.falloff ? *settings_.field.falloff : scene.falloff();
+void FieldTechnique::onUpdate(vtkRenderer* renderer, AOScene& scene) {
+  const FrameContext context = frameContext(settings_.common, scene.aoRadius(), scene.falloff());
   const std::uint64_t revision = sceneRevision(scene);
-  if (radius != radius_ || falloff != falloff_) {
-    radius_ = radius;
-    falloff_ = falloff;
-    plan(scene, collectInstances(scene, kCastsAO), {});
-    pass_->SetSceneRadius(radius_);
+  if (context.radius != radius_ || context.falloff != falloff_) {
+    radius_ = context.radius;
+    falloff_ = context.falloff;
+    plan(collectInstances(scene, kCastsAO), {});
     clearSelfOcclusion();  // baked for the old R or falloff
     applySelfOcclusion(renderer);
   } else if (revision != revision_) {
     const auto instances = collectInstances(scene, kCastsAO);
     if (place(instances)) {
-      pass_->SetOccluders(occluders_);
+      pass()->SetOccluders(occluders_);
     } else {
-      plan(scene, instances, {});
+      plan(instances, {});
       clearSelfOcclusion();  // fields may have changed under old actors
     }
     applySelfOcclusion(renderer);  // new actors, or meshes replaced under old ones
@@ -202,26 +181,6 @@ void FieldTechnique::update(vtkRenderer* renderer, AOScene& scene) {
   revision_ = revision;
 }
 
-void FieldTechnique::detach(vtkRenderer* renderer) {
-  clearSelfOcclusion();
-  if (pass_ && renderer->GetRenderWindow()) pass_->ReleaseGraphicsResources(renderer->GetRenderWindow());
-  renderer->SetPass(previous_);
-  pass_ = nullptr;
-  previous_ = nullptr;
-}
-
-std::size_t FieldTechnique::memoryBytes() const { return pass_ ? pass_->MemoryBytes() : fieldBytes(); }
-
-bool FieldTechnique::readAO(vtkRenderer* renderer, std::vector<float>& ao) {
-  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  return pass_ && renWin && pass_->ReadAO(renWin, ao);
-}
-
-void FieldTechnique::setStageTiming(bool on) {
-  timing_ = on;
-  if (pass_) pass_->SetStageTiming(on);
-}
-
-StageTimes FieldTechnique::stageTimes() { return pass_ ? pass_->GetStageTimes() : StageTimes{}; }
+void FieldTechnique::onDetach(vtkRenderer*) { clearSelfOcclusion(); }
 
 }  // namespace aokit

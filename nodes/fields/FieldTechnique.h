@@ -5,7 +5,8 @@
 //   scene's R and falloff, in the mesh's units: from a field file the scene names on the object
 //   (FieldAttachment.h), else from the bake cache (FieldCache.h, keyed by mesh content and bake
 //   settings), else baked with Embree. The bench times this as prepare_ms.
-// attach(): installs a FieldPass (FieldPass.h) with those fields; textures upload at its first frame.
+// attach(): installs a FieldPass (FieldPass.h) with those fields; textures upload at its first frame
+//   (render/PassTechnique.h keeps the pass it replaces).
 // update(): when the scene's revision changed, the occluders' world matrices are handed to the
 //   pass (a few floats each: no re-bake for moved or rotated occluders); a new instance, a
 //   rescaled one, a replaced mesh, or a new R or falloff plans and bakes again what is missing.
@@ -18,32 +19,16 @@
 #include <tuple>
 #include <vector>
 
-#include <vtkSmartPointer.h>
 #include <vtkWeakPointer.h>
 
-#include "core/AOTechnique.h"
 #include "fields/FieldInstances.h"
 #include "fields/FieldPass.h"
-#include "fields/FieldPassSettings.h"
 #include "fields/FieldSettings.h"
+#include "render/PassTechnique.h"
 
 class vtkActor;
-class vtkRenderPass;
 
 namespace aokit {
-
-struct FieldTechniqueSettings {
-  bool autoKind = true;           //!< per occluder: grid6 when flat, else cube (FieldInstances.h);
-                                  //!< false: every field of field.kind
-  FieldSettings field;            //!< bake settings and evaluator constants; field.radius is in world
-                                  //!< units here (0 = the scene's R), field.falloff empty = the scene's
-  FieldPassSettings pass;         //!< how the pass runs; its evaluator constants come from `field`
-  bool cache = true;              //!< keep bakes in the cache folder (FieldCache.h) and reuse them
-  std::string cacheDirectory;     //!< empty: FieldCache's default ($AOKIT_CACHE_DIR, ...)
-};
-
-// Throws std::invalid_argument (one line) on the first bad field.
-void validate(const FieldTechniqueSettings& s);
 
 // What the last prepare (or re-plan) did.
 struct FieldPrepareReport {
@@ -53,40 +38,39 @@ struct FieldPrepareReport {
   std::vector<std::string> warnings;
 };
 
-class FieldTechnique : public AOTechnique {
+class FieldTechnique : public PassTechnique {
  public:
   // Throws std::invalid_argument (one line) on bad settings.
-  explicit FieldTechnique(FieldTechniqueSettings settings = {});
+  explicit FieldTechnique(FieldSettings settings = {});
   std::string name() const override { return "field"; }
-  std::optional<Falloff> falloffOverride() const override { return settings_.field.falloff; }
+  std::optional<Falloff> falloffOverride() const override { return settings_.common.falloff; }
   // Throws std::runtime_error on a bad field file, an Embree error, or a cancelled bake.
   void prepare(AOScene& scene, const std::function<void(double)>& progress) override;
-  void attach(vtkRenderer* renderer, AOScene& scene) override;
-  void detach(vtkRenderer* renderer) override;
-  void update(vtkRenderer* renderer, AOScene& scene) override;
-  // The pass's GPU bytes once attached (G-buffer, targets, field data, tables), else the fields'.
-  std::size_t memoryBytes() const override;
-  bool readAO(vtkRenderer* renderer, std::vector<float>& ao) override;
-  void setStageTiming(bool on) override;
-  StageTimes stageTimes() override;
 
-  const FieldTechniqueSettings& settings() const { return settings_; }
+  const FieldSettings& settings() const { return settings_; }
   const std::vector<std::shared_ptr<const BakedField>>& fields() const { return fields_; }
   const std::vector<FieldOccluder>& occluders() const { return occluders_; }
   // Exact bytes of the field data ((N+2)^2 x 6 x 7 x 4 per cube field, ...).
   std::size_t fieldBytes() const;
   const FieldPrepareReport& report() const { return report_; }
-  FieldPass* pass() const { return pass_; }
+  FieldPass* pass() const;
+
+ protected:
+  vtkSmartPointer<vtkRenderPass> makePass() override;
+  void onAttach(vtkRenderer* renderer, AOScene& scene) override;
+  void onUpdate(vtkRenderer* renderer, AOScene& scene) override;
+  void onDetach(vtkRenderer* renderer) override;
+  // The pass's bytes count the uploaded fields; before attach, the fields'.
+  std::size_t extraMemoryBytes() const override { return pass() ? 0 : fieldBytes(); }
 
  private:
-  void plan(AOScene& scene, const std::vector<GeometryInstance>& instances,
-            const std::function<void(double)>& progress);
+  void plan(const std::vector<GeometryInstance>& instances, const std::function<void(double)>& progress);
   std::shared_ptr<const BakedField> obtain(const PlannedField& f, const std::function<void(double)>& progress);
   bool place(const std::vector<GeometryInstance>& instances);
   void applySelfOcclusion(vtkRenderer* renderer);
   void clearSelfOcclusion();
 
-  FieldTechniqueSettings settings_;
+  FieldSettings settings_;
   double radius_ = 0.0;              // world R the fields were planned for
   Falloff falloff_{};
   FieldPlan plan_;
@@ -102,10 +86,7 @@ class FieldTechnique : public AOTechnique {
   std::vector<FieldOccluder> occluders_;
   FieldPrepareReport report_;
   std::uint64_t revision_ = 0;
-  vtkSmartPointer<FieldPass> pass_;
-  vtkSmartPointer<vtkRenderPass> previous_;
   std::vector<vtkWeakPointer<vtkActor>> selfShaded_;  // actors given baked AO, cleared on detach
-  bool timing_ = false;
 };
 
 }  // namespace aokit

@@ -19,7 +19,7 @@
 
 #include <glm/glm.hpp>
 
-#include "fields/FieldSettings.h"
+#include "fields/FieldBakeSettings.h"
 
 namespace aokit {
 

@@ -55,14 +55,14 @@ void blurGrid(std::vector<float>& values, int n, int channels) {
       }
 }
 
-GridField bakeGridField(const TriangleMesh& mesh, const FieldSettings& s, double radius, Falloff falloff,
+GridField bakeGridField(const BakeMesh& input, const FieldBakeSettings& s, double radius, Falloff falloff,
                         const std::function<void(double)>& progress) {
+  const TriangleMesh& mesh = input.mesh();
   validate(s);
   if (s.kind != FieldKind::Grid6 && s.kind != FieldKind::Grid4)
     throw std::invalid_argument("grid field bake: kind must be grid6 or grid4");
   if (s.resolution < 2) throw std::invalid_argument("grid field bake: resolution must be resolved (>= 2)");
   if (!(radius > 0.0) || !std::isfinite(radius)) throw std::invalid_argument("grid field bake: radius must be positive");
-  mesh.validate();
   const int n = s.resolution;
   GridField field;
   field.kind = s.kind;
@@ -72,7 +72,7 @@ GridField bakeGridField(const TriangleMesh& mesh, const FieldSettings& s, double
   field.origin = b.min - glm::dvec3(pad);
   field.size = glm::max(b.max - b.min + glm::dvec3(2.0 * pad), glm::dvec3(1e-6 * std::max(radius, b.diagonal())));
 
-  const auto scene = makeOccluderScene(mesh);
+  const EmbreeScene& scene = input.scene();
   const std::vector<glm::dvec3> dirs = termDirections(s.kind);
   const int terms = static_cast<int>(dirs.size());
   const std::vector<glm::dvec3> sphere = fibonacciSphere(s.gridRays);
@@ -80,7 +80,7 @@ GridField bakeGridField(const TriangleMesh& mesh, const FieldSettings& s, double
   parallelRows(
       n * n, s.threads,
       [&](int row) {
-        OcclusionProbe probe(*scene, radius, falloff, sphere);
+        OcclusionProbe probe(scene, radius, falloff, sphere);
         const int j = row % n, k = row / n;
         for (int i = 0; i < n; ++i) {
           const std::size_t point = (static_cast<std::size_t>(k) * n + j) * n + i;
@@ -95,7 +95,7 @@ GridField bakeGridField(const TriangleMesh& mesh, const FieldSettings& s, double
         }
       },
       progress);
-  scene->throwIfError("grid field bake");
+  scene.throwIfError("grid field bake");
 
   if (s.blur) blurGrid(values, n, terms);
   for (int k = 0; k < n; ++k)

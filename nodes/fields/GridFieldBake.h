@@ -13,14 +13,14 @@
 #include <functional>
 #include <vector>
 
-#include "core/TriangleMesh.h"
+#include "fields/BakeMesh.h"
 #include "fields/GridField.h"
 
 namespace aokit {
 
 // settings.kind must be grid6 or grid4 and settings.resolution resolved (> 0); radius > 0 in the
 // mesh's units. progress may throw to cancel.
-GridField bakeGridField(const TriangleMesh& mesh, const FieldSettings& settings, double radius, Falloff falloff,
+GridField bakeGridField(const BakeMesh& mesh, const FieldBakeSettings& settings, double radius, Falloff falloff,
                         const std::function<void(double)>& progress = {});
 
 // The seed's 3x3x3 kernel on an n^3 grid of `channels` interleaved values: weight (z + 1)^2 for a

@@ -19,21 +19,17 @@
 // weights, 0.039 normalized; hence the default.
 #include <glm/glm.hpp>
 
+#include "fields/FieldEvalSettings.h"
 #include "fields/GridField.h"
 
 namespace aokit {
 
-struct GridEvalOptions {
-  double bias = 1.0;                           // normal offset in grid cells (seed: 1)
-  GridWeights weights = GridWeights::Normalized;
-};
-
 // p, n: receiver point and unit normal in occluder coordinates.
 double evaluateGridField(const GridField& field, const glm::dvec3& p, const glm::dvec3& n,
-                         const GridEvalOptions& options = {});
+                         const FieldEvalSettings& options = {});
 
 // The same with the seed's transforms: pr, nr in receiver coordinates.
 double evaluateGridField(const GridField& field, const glm::dmat4& occluderToWorld, const glm::dmat4& receiverToWorld,
-                         const glm::dvec3& pr, const glm::dvec3& nr, const GridEvalOptions& options = {});
+                         const glm::dvec3& pr, const glm::dvec3& nr, const FieldEvalSettings& options = {});
 
 }  // namespace aokit

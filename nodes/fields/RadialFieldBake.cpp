@@ -141,12 +141,12 @@ struct TexelFitter {
 
 }  // namespace
 
-RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, double radius, Falloff falloff,
+RadialField bakeRadialField(const BakeMesh& input, const FieldBakeSettings& s, double radius, Falloff falloff,
                             const std::function<void(double)>& progress) {
+  const TriangleMesh& mesh = input.mesh();
   validate(s);
   if (s.resolution < 1) throw std::invalid_argument("radial field bake: resolution must be resolved (> 0)");
   if (!(radius > 0.0) || !std::isfinite(radius)) throw std::invalid_argument("radial field bake: radius must be positive");
-  mesh.validate();
   const int n = s.resolution;
   RadialField field;
   field.resolution = n;
@@ -156,7 +156,7 @@ RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, do
   field.rMax = field.boundingRadius + radius;
 
   // Measure Omega and Upsilon along every supersampled direction.
-  const auto scene = makeOccluderScene(mesh);
+  const EmbreeScene& scene = input.scene();
   const HiResGrid grid(n, s.supersampling);
   const int k = s.radialSamples;
   const std::size_t dirs = 6u * grid.side * grid.side;
@@ -170,7 +170,7 @@ RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, do
   parallelRows(
       6 * grid.side, s.threads,
       [&](int row) {
-        OcclusionProbe probe(*scene, radius, falloff, sphere);
+        OcclusionProbe probe(scene, radius, falloff, sphere);
         const int face = row / grid.side, l = row % grid.side;
         for (int kx = 0; kx < grid.side; ++kx) {
           const std::size_t d = (static_cast<std::size_t>(face) * grid.side + l) * grid.side + kx;
@@ -197,7 +197,7 @@ RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& s, do
         }
       },
       rayProgress);
-  scene->throwIfError("radial field bake");
+  scene.throwIfError("radial field bake");
 
   // Fit every stored texel to the Gaussian-weighted samples around it, with the far fade given or,
   // by default, the candidate whose fits leave the smallest residual on a third of the texels.

@@ -35,15 +35,15 @@
 // texel direction (C0.w <= 0.9 r0) so that C0 - r w never vanishes for r >= r0.
 #include <functional>
 
-#include "core/TriangleMesh.h"
-#include "fields/FieldSettings.h"
+#include "fields/BakeMesh.h"
+#include "fields/FieldBakeSettings.h"
 #include "fields/RadialField.h"
 
 namespace aokit {
 
 // settings.resolution must be resolved (> 0); radius > 0 in the mesh's units. progress gets the
 // fraction done and may throw to cancel. Throws std::invalid_argument on bad input.
-RadialField bakeRadialField(const TriangleMesh& mesh, const FieldSettings& settings, double radius, Falloff falloff,
+RadialField bakeRadialField(const BakeMesh& mesh, const FieldBakeSettings& settings, double radius, Falloff falloff,
                             const std::function<void(double)>& progress = {});
 
 }  // namespace aokit

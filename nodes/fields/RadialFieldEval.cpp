@@ -26,7 +26,7 @@ void fetchRadialTexels(const RadialField& field, const glm::dvec3& direction, fl
 }
 
 RadialSample evaluateRadialField(const RadialField& field, const glm::dvec3& x, const glm::dvec3& n,
-                                 const RadialEvalOptions& options) {
+                                 const FieldEvalSettings& options) {
   RadialSample s;
   const double r = glm::length(x);
   if (!(r <= field.rMax)) return s;  // also NaN
@@ -51,7 +51,7 @@ RadialSample evaluateRadialField(const RadialField& field, const glm::dvec3& x, 
 }
 
 RadialSample evaluateRadialField(const RadialField& field, const glm::dmat4& occluderToWorld, const glm::dvec3& p,
-                                 const glm::dvec3& n, const RadialEvalOptions& options) {
+                                 const glm::dvec3& n, const FieldEvalSettings& options) {
   const glm::dmat4 inv = glm::inverse(occluderToWorld);
   const glm::dvec3 x = glm::dvec3(inv * glm::dvec4(p, 1.0)) - field.centre;
   const glm::dvec3 nf = glm::normalize(glm::transpose(glm::dmat3(occluderToWorld)) * n);  // N(O^-1) = O^T

@@ -16,14 +16,10 @@
 // A receiver at the centre itself (r = 0) uses w = +z.
 #include <glm/glm.hpp>
 
+#include "fields/FieldEvalSettings.h"
 #include "fields/RadialField.h"
 
 namespace aokit {
-
-struct RadialEvalOptions {
-  double insideExponent = 2.0;   // p
-  double insideOcclusion = 0.5;  // A0
-};
 
 struct RadialSample {
   double occlusion = 0.0;     // A, Algorithm 1's result
@@ -34,14 +30,14 @@ struct RadialSample {
 
 // x: receiver position in field space; n: unit receiver normal in field space.
 RadialSample evaluateRadialField(const RadialField& field, const glm::dvec3& x, const glm::dvec3& n,
-                                 const RadialEvalOptions& options = {});
+                                 const FieldEvalSettings& options = {});
 
 // The same for a receiver point and normal in world space, with the occluder placed by
 // occluderToWorld (O): x = O^-1 p - centre, n = normalize(N(O^-1) n) with N the inverse transpose
 // of the upper 3x3. Upsilon comes back in world space (O's linear part applied, renormalized),
 // ready for combining.
 RadialSample evaluateRadialField(const RadialField& field, const glm::dmat4& occluderToWorld, const glm::dvec3& p,
-                                 const glm::dvec3& n, const RadialEvalOptions& options = {});
+                                 const glm::dvec3& n, const FieldEvalSettings& options = {});
 
 // Bilinear fetch of the 4 + 3 texel channels for a direction (what the two texture() calls return).
 void fetchRadialTexels(const RadialField& field, const glm::dvec3& direction, float occlusion[4], float centroid[3]);

@@ -9,9 +9,9 @@
 
 namespace aokit {
 
-std::vector<float> bakeVertexOcclusion(const TriangleMesh& mesh, double radius, Falloff falloff, int rays,
+std::vector<float> bakeVertexOcclusion(const BakeMesh& input, double radius, Falloff falloff, int rays,
                                        int threads, std::uint64_t seed, const std::function<void(double)>& progress) {
-  mesh.validate();
+  const TriangleMesh& mesh = input.mesh();
   TriangleMesh withNormals;
   const TriangleMesh* m = &mesh;
   if (mesh.normals.size() != mesh.positions.size()) {
@@ -19,7 +19,7 @@ std::vector<float> bakeVertexOcclusion(const TriangleMesh& mesh, double radius, 
     withNormals.computeNormals();
     m = &withNormals;
   }
-  const auto scene = makeOccluderScene(*m);
+  const EmbreeScene& scene = input.scene();  // normals do not enter the scene
   // Vertices as the "pixels" of a 256-wide image, so the reference's row-parallel loop applies.
   const int width = 256;
   const std::size_t count = m->positions.size();
@@ -37,7 +37,7 @@ std::vector<float> bakeVertexOcclusion(const TriangleMesh& mesh, double radius, 
   options.seed = seed;
   options.threads = threads;
   options.progress = progress;
-  const AOBuffer ao = computeReferenceAO(*scene, samples, options);
+  const AOBuffer ao = computeReferenceAO(scene, samples, options);
   std::vector<float> out(count, 0.0f);
   for (std::size_t i = 0; i < count; ++i) out[i] = ao.covered[i] ? ao.ao[i] : 0.0f;
   return out;

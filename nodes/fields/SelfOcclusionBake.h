@@ -7,13 +7,13 @@
 #include <vector>
 
 #include "core/AOScene.h"
-#include "core/TriangleMesh.h"
+#include "fields/BakeMesh.h"
 
 namespace aokit {
 
 // One value in [0, 1] per vertex (mesh.positions order). Vertices without normals get them
 // computed (area-weighted). progress may throw to cancel.
-std::vector<float> bakeVertexOcclusion(const TriangleMesh& mesh, double radius, Falloff falloff, int rays,
+std::vector<float> bakeVertexOcclusion(const BakeMesh& mesh, double radius, Falloff falloff, int rays,
                                        int threads = 0, std::uint64_t seed = 1,
                                        const std::function<void(double)>& progress = {});
 

@@ -9,7 +9,6 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
-#include "core/AOScene.h"
 #include "render/GBufferPass.h"
 #include "headless/OffscreenWindow.h"
 #include "render/SceneRenderer.h"
@@ -18,28 +17,19 @@ namespace aokit {
 
 namespace {
 
-// While alive: the scene's technique is off and the renderer draws through `pass`; both are
-// restored on scope exit, exceptions included.
-class PassOverride {
+// While alive: the renderer draws through `pass`; the pass it had (the technique's, which stays
+// attached with its GPU state) is put back on scope exit, exceptions included.
+class PassSwap {
  public:
-  PassOverride(SceneRenderer& scene, vtkRenderer* renderer, vtkRenderPass* pass)
-      : scene_(scene), renderer_(renderer), technique_(scene.scene()->technique()) {
-    scene_.scene()->setTechnique(nullptr);
-    scene_.sync();                     // detaches the technique, which puts back its own previous pass
-    previous_ = renderer_->GetPass();  // so this is the pass from before any technique
+  PassSwap(vtkRenderer* renderer, vtkRenderPass* pass) : renderer_(renderer), previous_(renderer->GetPass()) {
     renderer_->SetPass(pass);
   }
-  ~PassOverride() {
-    renderer_->SetPass(previous_);
-    scene_.scene()->setTechnique(technique_);
-  }
-  PassOverride(const PassOverride&) = delete;
-  PassOverride& operator=(const PassOverride&) = delete;
+  ~PassSwap() { renderer_->SetPass(previous_); }
+  PassSwap(const PassSwap&) = delete;
+  PassSwap& operator=(const PassSwap&) = delete;
 
  private:
-  SceneRenderer& scene_;
   vtkRenderer* renderer_;
-  std::shared_ptr<AOTechnique> technique_;
   vtkSmartPointer<vtkRenderPass> previous_;
 };
 
@@ -53,15 +43,16 @@ SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene) {
   vtkRenderer* renderer = window.renderer();
   const ShadingMode mode = scene.shadingMode();
   scene.setShadingMode(ShadingMode::Lit);  // lighting on: VTK then provides vertexVC and normals
+  scene.sync();
   {
-    PassOverride override(scene, renderer, gbuffer);
+    PassSwap swap(renderer, gbuffer);
     window.render();
     window.makeCurrent();
     if (!gbuffer->ReadBack(posVC, nrmVC) || !gbuffer->ReadFlags(flags))
       throw std::runtime_error("G-buffer read-back failed");
   }
   scene.setShadingMode(mode);
-  scene.sync();  // the technique is back: let it re-attach
+  scene.sync();
   gbuffer->ReleaseGraphicsResources(window.window());
 
   // VTK's model-view matrix maps world to view coordinates (row-major, column vectors).

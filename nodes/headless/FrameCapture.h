@@ -9,8 +9,9 @@ namespace aokit {
 class OffscreenWindow;
 class SceneRenderer;
 
-// Renders the scene (no AO technique) through a GBufferPass and converts positions and normals
-// from view to world space in double precision; receives comes from the G-buffer's flags.
+// Renders the scene through a full-layout GBufferPass put in the renderer's pass for one frame (the
+// technique stays attached, its pass and GPU state kept) and converts positions and normals from
+// view to world space in double precision; receives comes from the G-buffer's flags.
 SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene);
 
 // Renders a frame with the scene's technique, as it is shaded (capture must not change what the

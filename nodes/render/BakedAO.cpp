@@ -5,6 +5,8 @@
 
 #include <vtkActor.h>
 #include <vtkFloatArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationObjectBaseKey.h>
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkPointData.h>
@@ -13,47 +15,88 @@
 namespace aokit {
 
 namespace {
+
+// The actor's source polydata (the input without values), kept on its property keys.
+struct BakedAOKeys {
+  static vtkInformationObjectBaseKey* SOURCE();
+};
+vtkInformationKeyMacro(BakedAOKeys, SOURCE, ObjectBase);
+
 vtkOpenGLPolyDataMapper* mapperOf(vtkActor* actor) {
   auto* mapper = actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
   if (!mapper || !vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)))
     throw std::invalid_argument("baked AO: the actor has no poly-data mapper input");
   return mapper;
 }
-}  // namespace
 
-void setBakedAO(vtkActor* actor, const std::vector<float>& perVertex) {
-  vtkOpenGLPolyDataMapper* mapper = mapperOf(actor);
-  auto* input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  if (static_cast<vtkIdType>(perVertex.size()) != input->GetNumberOfPoints())
-    throw std::invalid_argument("baked AO: " + std::to_string(perVertex.size()) + " values for " +
-                                std::to_string(input->GetNumberOfPoints()) + " points");
-  vtkNew<vtkFloatArray> values;
-  values->SetName(kBakedAOArray);
-  values->SetNumberOfValues(static_cast<vtkIdType>(perVertex.size()));
-  for (std::size_t i = 0; i < perVertex.size(); ++i) values->SetValue(static_cast<vtkIdType>(i), perVertex[i]);
-  // A shallow copy: the mesh may be shared by other actors that carry other values (or none).
+vtkPolyData* inputOf(vtkActor* actor) {
+  auto* mapper = actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+  return mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+}
+
+vtkPolyData* sourceOf(vtkActor* actor) {
+  vtkInformation* keys = actor->GetPropertyKeys();
+  if (keys && keys->Has(BakedAOKeys::SOURCE())) return vtkPolyData::SafeDownCast(keys->Get(BakedAOKeys::SOURCE()));
+  return inputOf(actor);  // a plain VTK actor: its input, never given values yet
+}
+
+void keepSource(vtkActor* actor, vtkPolyData* source) {
+  if (!actor->GetPropertyKeys()) {
+    vtkNew<vtkInformation> info;
+    actor->SetPropertyKeys(info);
+  }
+  actor->GetPropertyKeys()->Set(BakedAOKeys::SOURCE(), source);
+}
+
+// The mapper draws a shallow copy of `source` with `values` (or the source itself without).
+void bind(vtkOpenGLPolyDataMapper* mapper, vtkPolyData* source, vtkDataArray* values) {
+  if (!values) {
+    mapper->SetInputData(source);
+    mapper->RemoveVertexAttributeMapping("aokitBakedAOMC");
+    return;
+  }
   vtkNew<vtkPolyData> copy;
-  copy->ShallowCopy(input);
+  copy->ShallowCopy(source);
   copy->GetPointData()->RemoveArray(kBakedAOArray);
   copy->GetPointData()->AddArray(values);
   mapper->SetInputData(copy);
   mapper->MapDataArrayToVertexAttribute("aokitBakedAOMC", kBakedAOArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 
+}  // namespace
+
+void setActorInput(vtkActor* actor, vtkPolyData* source) {
+  auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
+  if (!mapper) throw std::invalid_argument("baked AO: the actor has no poly-data mapper");
+  vtkPolyData* current = inputOf(actor);
+  vtkDataArray* values = current && hasBakedAO(actor) ? current->GetPointData()->GetArray(kBakedAOArray) : nullptr;
+  keepSource(actor, source);
+  const bool fits = values && source && values->GetNumberOfTuples() == source->GetNumberOfPoints();
+  bind(mapper, source, fits ? values : nullptr);
+}
+
+void setBakedAO(vtkActor* actor, const std::vector<float>& perVertex) {
+  vtkOpenGLPolyDataMapper* mapper = mapperOf(actor);
+  vtkPolyData* source = sourceOf(actor);
+  if (static_cast<vtkIdType>(perVertex.size()) != source->GetNumberOfPoints())
+    throw std::invalid_argument("baked AO: " + std::to_string(perVertex.size()) + " values for " +
+                                std::to_string(source->GetNumberOfPoints()) + " points");
+  vtkNew<vtkFloatArray> values;
+  values->SetName(kBakedAOArray);
+  values->SetNumberOfValues(static_cast<vtkIdType>(perVertex.size()));
+  for (std::size_t i = 0; i < perVertex.size(); ++i) values->SetValue(static_cast<vtkIdType>(i), perVertex[i]);
+  keepSource(actor, source);
+  bind(mapper, source, values);
+}
+
 void clearBakedAO(vtkActor* actor) {
   vtkOpenGLPolyDataMapper* mapper = mapperOf(actor);
-  auto* input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  if (!input->GetPointData()->HasArray(kBakedAOArray)) return;
-  vtkNew<vtkPolyData> copy;
-  copy->ShallowCopy(input);
-  copy->GetPointData()->RemoveArray(kBakedAOArray);
-  mapper->SetInputData(copy);
-  mapper->RemoveVertexAttributeMapping("aokitBakedAOMC");
+  if (!hasBakedAO(actor)) return;
+  bind(mapper, sourceOf(actor), nullptr);
 }
 
 bool hasBakedAO(vtkActor* actor) {
-  auto* mapper = actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-  auto* input = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  vtkPolyData* input = inputOf(actor);
   return input && input->GetPointData()->HasArray(kBakedAOArray);
 }
 

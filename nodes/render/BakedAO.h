@@ -2,18 +2,26 @@
 // Per-vertex AO baked on the CPU (an occluder's self-occlusion, static geometry's AO) carried to the
 // G-buffer as a vertex attribute (GBufferPass::SetBakedAO) and combined into the frame by
 // DeferredAOPass (DeferredConfig::bakedAO): total AO = 1 - (1 - baked)(1 - the family's AO).
+//
+// One owner for an actor's mapper input: its source polydata is set with setActorInput (the scene
+// renderer does; a plain VTK actor's first input counts as its source), techniques hand their values
+// with setBakedAO, and the mapper draws a shallow copy of the source with the values as point array
+// kBakedAOArray. The source itself is never changed: other actors may share it.
 #include <vector>
 
 class vtkActor;
+class vtkPolyData;
 
 namespace aokit {
 
 // The point array that carries the values, and the vertex attribute the G-buffer reads.
 constexpr const char* kBakedAOArray = "AOKitBakedAO";
 
-// Gives the actor's mapper a shallow copy of its input with `perVertex` (one value in [0, 1] per
-// point) as point array kBakedAOArray, mapped to the G-buffer's attribute; replaces earlier values.
-// Throws std::invalid_argument when the counts differ or the actor has no poly-data input.
+// Sets the actor's source polydata (on its poly-data mapper); values set before are kept when they
+// still match the source's point count, and dropped otherwise (the geometry changed).
+void setActorInput(vtkActor* actor, vtkPolyData* source);
+// Hands the actor `perVertex` (one value in [0, 1] per point of its source); replaces earlier
+// values. Throws std::invalid_argument when the counts differ or the actor has no poly-data input.
 void setBakedAO(vtkActor* actor, const std::vector<float>& perVertex);
 // Removes the values again (the G-buffer then reads 0 for this actor).
 void clearBakedAO(vtkActor* actor);

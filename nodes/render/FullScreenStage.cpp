@@ -39,6 +39,12 @@ vtkShaderProgram* FullScreenStage::ready(vtkOpenGLRenderWindow* renWin, const st
   return failed_ ? nullptr : quad_->Program;
 }
 
+vtkShaderProgram* FullScreenStage::use(vtkOpenGLRenderWindow* renWin) {
+  if (!quad_ || failed_) return nullptr;
+  renWin->GetShaderCache()->ReadyShaderProgram(quad_->Program);
+  return quad_->Program;
+}
+
 void FullScreenStage::render() {
   if (quad_ && !failed_) quad_->Render();
 }

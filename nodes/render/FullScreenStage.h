@@ -25,6 +25,9 @@ class FullScreenStage {
   // Builds (when the defines changed) and binds the program. Returns nullptr when it does not
   // compile or link; VTK's shader cache has then printed the log, and the caller reports the stage.
   vtkShaderProgram* ready(vtkOpenGLRenderWindow* renWin, const std::string& defines);
+  // Binds the program the last ready() built (nullptr when it failed or none was built): how a
+  // pass's stages draw once its plan has readied them.
+  vtkShaderProgram* use(vtkOpenGLRenderWindow* renWin);
   // Draws the quad with the bound program (after ready()) into the current framebuffer.
   void render();
   // Draws it into `targets` (colour attachments 0, 1, ...) through `fbo`, at the first target's

@@ -44,8 +44,8 @@ void GBufferPass::SetDelegatePass(vtkRenderPass* delegate) {
 void GBufferPass::DropTargets() {
   // The targets and the mappers' shaders change: drop the targets, and LayoutTime makes VTK
   // rebuild the shaders (GetShaderStageMTime).
-  ColorTexture = PositionTexture = NormalTexture = DepthTexture = FlagsTexture = BakedAOTexture =
-      InstanceIdTexture = nullptr;
+  for (auto& t : Targets) t = nullptr;
+  DepthTexture = nullptr;
   Framebuffer = nullptr;
   Width = Height = 0;
   LayoutTime.Modified();
@@ -53,20 +53,20 @@ void GBufferPass::DropTargets() {
 }
 
 void GBufferPass::SetLean(bool on) {
-  if (on == Lean) return;
-  Lean = on;
+  if (on == Options.lean) return;
+  Options.lean = on;
   DropTargets();
 }
 
 void GBufferPass::SetBakedAO(bool on) {
-  if (on == BakedAO) return;
-  BakedAO = on;
+  if (on == Options.bakedAO) return;
+  Options.bakedAO = on;
   DropTargets();
 }
 
 void GBufferPass::SetInstanceIds(bool on) {
-  if (on == InstanceIds) return;
-  InstanceIds = on;
+  if (on == Options.instanceIds) return;
+  Options.instanceIds = on;
   DropTargets();
 }
 
@@ -123,16 +123,9 @@ vtkSmartPointer<vtkTextureObject> makeTarget(vtkOpenGLRenderWindow* renWin, int 
 
 void GBufferPass::Allocate(vtkOpenGLRenderWindow* renWin, int w, int h) {
   if (!Framebuffer) {
-    ColorTexture = makeTarget(renWin, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4, VTK_UNSIGNED_CHAR, w, h);
-    if (Lean) {
-      NormalTexture = makeTarget(renWin, GL_RGB10_A2, GL_RGBA, GL_UNSIGNED_BYTE, 4, VTK_UNSIGNED_CHAR, w, h);
-    } else {
-      PositionTexture = makeTarget(renWin, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, w, h);
-      NormalTexture = makeTarget(renWin, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, VTK_FLOAT, w, h);
-    }
-    FlagsTexture = makeTarget(renWin, GL_R8, GL_RED, GL_UNSIGNED_BYTE, 1, VTK_UNSIGNED_CHAR, w, h);
-    if (BakedAO) BakedAOTexture = makeTarget(renWin, GL_R16F, GL_RED, GL_FLOAT, 1, VTK_FLOAT, w, h);
-    if (InstanceIds) InstanceIdTexture = makeTarget(renWin, GL_R32F, GL_RED, GL_FLOAT, 1, VTK_FLOAT, w, h);
+    for (const GBufferTargetFormat& f : gbufferLayout(Options))
+      Targets[static_cast<int>(f.target)] =
+          makeTarget(renWin, f.internalFormat, f.format, f.type, f.components, f.vtkType, w, h);
     DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
     DepthTexture->SetContext(renWin);
     DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -141,12 +134,7 @@ void GBufferPass::Allocate(vtkOpenGLRenderWindow* renWin, int w, int h) {
     Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     Framebuffer->SetContext(renWin);
   } else if (w != Width || h != Height) {
-    ColorTexture->Resize(w, h);
-    if (PositionTexture) PositionTexture->Resize(w, h);
-    NormalTexture->Resize(w, h);
-    FlagsTexture->Resize(w, h);
-    if (BakedAOTexture) BakedAOTexture->Resize(w, h);
-    if (InstanceIdTexture) InstanceIdTexture->Resize(w, h);
+    for (const GBufferTargetFormat& f : gbufferLayout(Options)) Targets[static_cast<int>(f.target)]->Resize(w, h);
     DepthTexture->Resize(w, h);
   }
   Width = w;
@@ -207,16 +195,9 @@ void GBufferPass::Render(const vtkRenderState* s) {
   PreRender(rs);
   Framebuffer->SaveCurrentBindingsAndBuffers();
   Framebuffer->Bind();
-  Framebuffer->AddColorAttachment(0, ColorTexture);
-  if (Lean) {
-    Framebuffer->AddColorAttachment(1, NormalTexture);
-  } else {
-    Framebuffer->AddColorAttachment(1, PositionTexture);
-    Framebuffer->AddColorAttachment(2, NormalTexture);
-  }
-  Framebuffer->AddColorAttachment(FlagsAttachment(), FlagsTexture);
-  if (BakedAO) Framebuffer->AddColorAttachment(BakedAOAttachment(), BakedAOTexture);
-  if (InstanceIds) Framebuffer->AddColorAttachment(Attachments() - 1, InstanceIdTexture);
+  const std::vector<GBufferTargetFormat> layout = gbufferLayout(Options);
+  for (std::size_t i = 0; i < layout.size(); ++i)
+    Framebuffer->AddColorAttachment(static_cast<unsigned>(i), Targets[static_cast<int>(layout[i].target)]);
   Framebuffer->AddDepthAttachment(DepthTexture);
   Framebuffer->ActivateDrawBuffers(Attachments());
   Framebuffer->StartNonOrtho(W, H);
@@ -257,16 +238,17 @@ void GBufferPass::CopyToFramebuffer(vtkOpenGLRenderWindow* renWin) {
   vtkOpenGLState* state = renWin->GetState();
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_ALWAYS);
-  ColorTexture->Activate();
+  vtkTextureObject* color = GetColorTexture();
+  color->Activate();
   DepthTexture->Activate();
-  CopyQuad->Program->SetUniformi("texColor", ColorTexture->GetTextureUnit());
+  CopyQuad->Program->SetUniformi("texColor", color->GetTextureUnit());
   CopyQuad->Program->SetUniformi("texDepth", DepthTexture->GetTextureUnit());
   // The viewport's part of the targets: texCoord * scale + offset.
   const float region[4] = {static_cast<float>(GetScreenWidth()) / Width, static_cast<float>(GetScreenHeight()) / Height,
                            static_cast<float>(GuardX) / Width, static_cast<float>(GuardY) / Height};
   CopyQuad->Program->SetUniform4f("texRegion", region);
   CopyQuad->Render();
-  ColorTexture->Deactivate();
+  color->Deactivate();
   DepthTexture->Deactivate();
   state->vtkglDepthFunc(GL_LEQUAL);
 }
@@ -278,7 +260,7 @@ bool GBufferPass::PreReplaceShaderValues(std::string& vs, std::string&, std::str
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper)) {
     vtkShaderProgram::Substitute(fs, "//VTK::Output::Dec", "//VTK::Output::Dec\n//AOKIT::GBuffer::Dec\n", false);
     vtkShaderProgram::Substitute(fs, "//VTK::Picking::Impl", "//VTK::Picking::Impl\n  //AOKIT::GBuffer::Impl\n", false);
-    if (BakedAO) {
+    if (Options.bakedAO) {
       // The baked value rides along as a vertex attribute. Where a mapper has no such array the
       // attribute's current value is undefined (GL leaves it so after array draws): a per-prop
       // uniform scales it to 0 there.
@@ -298,7 +280,7 @@ bool GBufferPass::PostReplaceShaderValues(std::string& vs, std::string& gs, std:
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper)) return true;
   // With a geometry shader (wide lines) VTK renames the fragment inputs to GSOut: the baked value
   // does not pass through one, so such draws write 0.
-  const bool bakedInput = BakedAO && gs.empty() && vs.find("aokitBakedAOVSOutput") != std::string::npos;
+  const bool bakedInput = Options.bakedAO && gs.empty() && vs.find("aokitBakedAOVSOutput") != std::string::npos;
   vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Dec",
                                std::string("uniform float aokitFlags;\nuniform float aokitInstanceId;\nuniform int "
                                            "aokitParallel;\n") +
@@ -307,11 +289,14 @@ bool GBufferPass::PostReplaceShaderValues(std::string& vs, std::string& gs, std:
   std::string impl;
   if (fs.find("vertexVC") != std::string::npos && fs.find("normalVCVSOutput") != std::string::npos) {
     std::string code = GBufferOutputFS;
-    vtkShaderProgram::Substitute(code, "@FLAGS@", std::to_string(FlagsAttachment()), true);
+    // Absent targets still get numbers of existing outputs (their code is #if'd out, but VTK
+    // declares every gl_FragData[n] it finds): baked AO follows the flags, ids come last.
+    const int flags = Attachment(GBufferTarget::Flags);
+    vtkShaderProgram::Substitute(code, "@FLAGS@", std::to_string(flags), true);
     vtkShaderProgram::Substitute(code, "@IDS@", std::to_string(Attachments() - 1), true);
-    vtkShaderProgram::Substitute(code, "@BAKED@", std::to_string(BakedAOAttachment()), true);
-    impl = std::string("#define AOKIT_GBUFFER_LEAN ") + (Lean ? "1" : "0") + "\n#define AOKIT_GBUFFER_IDS " +
-           (InstanceIds ? "1" : "0") + "\n#define AOKIT_GBUFFER_BAKED " + (BakedAO ? "1" : "0") +
+    vtkShaderProgram::Substitute(code, "@BAKED@", std::to_string(flags + 1), true);
+    impl = std::string("#define AOKIT_GBUFFER_LEAN ") + (Options.lean ? "1" : "0") + "\n#define AOKIT_GBUFFER_IDS " +
+           (Options.instanceIds ? "1" : "0") + "\n#define AOKIT_GBUFFER_BAKED " + (Options.bakedAO ? "1" : "0") +
            "\n#define AOKIT_GBUFFER_BAKED_VALUE " + (bakedInput ? "aokitBakedAOVSOutput" : "0.0") + "\n" + code;
   } else {
     // Without the varyings (no lighting, no normals) the surface cannot be described: leave it
@@ -331,7 +316,7 @@ bool GBufferPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapp
     program->SetUniformf("aokitFlags", flags / 255.0f);
     program->SetUniformf("aokitInstanceId", static_cast<float>(propInstanceId(prop)));
     program->SetUniformi("aokitParallel", Parallel ? 1 : 0);
-    if (BakedAO) program->SetUniformf("aokitBakedScale", hasBakedAO(vtkActor::SafeDownCast(prop)) ? 1.0f : 0.0f);
+    if (Options.bakedAO) program->SetUniformf("aokitBakedScale", hasBakedAO(vtkActor::SafeDownCast(prop)) ? 1.0f : 0.0f);
   }
   return true;
 }
@@ -346,16 +331,16 @@ void GBufferPass::ActivateDrawBuffers(int count) {
 }
 
 bool GBufferPass::ReadBack(std::vector<float>& positionsVC, std::vector<float>& normalsVC) {
-  if (!Framebuffer || Width == 0 || Lean) return false;
+  if (!Framebuffer || Width == 0 || Options.lean) return false;
   const std::size_t n = static_cast<std::size_t>(Width) * Height * 4;
   positionsVC.resize(n);
   normalsVC.resize(n);
   Framebuffer->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
   Framebuffer->Bind(GL_READ_FRAMEBUFFER);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + Attachment(GBufferTarget::Position));
   glReadPixels(0, 0, Width, Height, GL_RGBA, GL_FLOAT, positionsVC.data());
-  glReadBuffer(GL_COLOR_ATTACHMENT2);
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + Attachment(GBufferTarget::Normal));
   glReadPixels(0, 0, Width, Height, GL_RGBA, GL_FLOAT, normalsVC.data());
   Framebuffer->UnBind(GL_READ_FRAMEBUFFER);
   Framebuffer->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
@@ -368,7 +353,7 @@ bool GBufferPass::ReadFlags(std::vector<std::uint8_t>& flags) {
   Framebuffer->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
   Framebuffer->Bind(GL_READ_FRAMEBUFFER);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadBuffer(GL_COLOR_ATTACHMENT0 + FlagsAttachment());
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + Attachment(GBufferTarget::Flags));
   glReadPixels(0, 0, Width, Height, GL_RED, GL_UNSIGNED_BYTE, flags.data());
   Framebuffer->UnBind(GL_READ_FRAMEBUFFER);
   Framebuffer->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
@@ -376,10 +361,7 @@ bool GBufferPass::ReadFlags(std::vector<std::uint8_t>& flags) {
 }
 
 std::size_t GBufferPass::MemoryBytes() const {
-  // Colour RGBA8, depth 32F and flags R8, then position + normal (2 x RGBA32F) or the packed
-  // normal, and ids.
-  return static_cast<std::size_t>(Width) * Height *
-         (4 + 4 + 1 + (Lean ? 4 : 16 + 16) + (BakedAO ? 2 : 0) + (InstanceIds ? 4 : 0));
+  return static_cast<std::size_t>(Width) * Height * gbufferBytesPerPixel(Options);
 }
 
 void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {
@@ -388,8 +370,8 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {
   if (CopyQuad && CopyQuad->Program) CopyQuad->Program->ReleaseGraphicsResources(w);
   delete CopyQuad;
   CopyQuad = nullptr;
-  ColorTexture = PositionTexture = NormalTexture = DepthTexture = FlagsTexture = BakedAOTexture =
-      InstanceIdTexture = nullptr;
+  for (auto& t : Targets) t = nullptr;
+  DepthTexture = nullptr;
   Framebuffer = nullptr;
   Width = Height = GuardX = GuardY = 0;
 }

@@ -36,6 +36,8 @@
 
 #include <vtkOpenGLFramebufferObject.h>  // held by vtkSmartPointer
 #include <vtkTextureObject.h>
+
+#include "render/GBufferLayout.h"
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 
@@ -52,13 +54,13 @@ class GBufferPass : public vtkOpenGLRenderPass {
   void SetCopyToOutput(bool on) { CopyToOutput = on; }
   // Lean layout (see above); takes effect at the next Render (targets are rebuilt).
   void SetLean(bool on);
-  bool GetLean() const { return Lean; }
+  bool GetLean() const { return Options.lean; }
   // Baked-AO target (see above); takes effect at the next Render (targets are rebuilt).
   void SetBakedAO(bool on);
-  bool GetBakedAO() const { return BakedAO; }
+  bool GetBakedAO() const { return Options.bakedAO; }
   // Instance-id target (see above); takes effect at the next Render (targets are rebuilt).
   void SetInstanceIds(bool on);
-  bool GetInstanceIds() const { return InstanceIds; }
+  bool GetInstanceIds() const { return Options.instanceIds; }
   // Guard band as a fraction of the viewport size added on each side, 0..1; next Render.
   void SetGuardBand(double fraction);
   double GetGuardBand() const { return Guard; }
@@ -78,13 +80,14 @@ class GBufferPass : public vtkOpenGLRenderPass {
   // Mappers rebuild their shaders when this changes (the lean switch changes the outputs).
   vtkMTimeType GetShaderStageMTime() override { return LayoutTime.GetMTime(); }
 
-  vtkTextureObject* GetColorTexture() const { return ColorTexture; }
-  vtkTextureObject* GetPositionTexture() const { return PositionTexture; }  // null when lean
-  vtkTextureObject* GetNormalTexture() const { return NormalTexture; }      // packed when lean
+  vtkTextureObject* GetTexture(GBufferTarget t) const { return Targets[static_cast<int>(t)]; }
+  vtkTextureObject* GetColorTexture() const { return GetTexture(GBufferTarget::Color); }
+  vtkTextureObject* GetPositionTexture() const { return GetTexture(GBufferTarget::Position); }  // null when lean
+  vtkTextureObject* GetNormalTexture() const { return GetTexture(GBufferTarget::Normal); }      // packed when lean
   vtkTextureObject* GetDepthTexture() const { return DepthTexture; }
-  vtkTextureObject* GetFlagsTexture() const { return FlagsTexture; }
-  vtkTextureObject* GetBakedAOTexture() const { return BakedAOTexture; }  // null unless enabled
-  vtkTextureObject* GetInstanceIdTexture() const { return InstanceIdTexture; }  // null unless enabled
+  vtkTextureObject* GetFlagsTexture() const { return GetTexture(GBufferTarget::Flags); }
+  vtkTextureObject* GetBakedAOTexture() const { return GetTexture(GBufferTarget::BakedAO); }  // null unless enabled
+  vtkTextureObject* GetInstanceIdTexture() const { return GetTexture(GBufferTarget::InstanceId); }  // null unless enabled
   vtkOpenGLFramebufferObject* GetFramebuffer() const { return Framebuffer; }
   int GetWidth() const { return Width; }    // of the targets: the viewport plus the guard band
   int GetHeight() const { return Height; }
@@ -109,23 +112,19 @@ class GBufferPass : public vtkOpenGLRenderPass {
   ~GBufferPass() override;
 
  private:
-  // colour, (position,) normal, flags, (baked AO), (ids)
-  int FlagsAttachment() const { return Lean ? 2 : 3; }
-  int BakedAOAttachment() const { return FlagsAttachment() + 1; }
-  int Attachments() const { return FlagsAttachment() + 1 + (BakedAO ? 1 : 0) + (InstanceIds ? 1 : 0); }
+  int Attachment(GBufferTarget t) const { return gbufferAttachment(Options, t); }
+  int Attachments() const { return static_cast<int>(gbufferLayout(Options).size()); }
   void DropTargets();
   void ActivateDrawBuffers(int count);
   void Allocate(vtkOpenGLRenderWindow* renWin, int w, int h);
 
   vtkSmartPointer<vtkRenderPass> Delegate;
-  vtkSmartPointer<vtkTextureObject> ColorTexture, PositionTexture, NormalTexture, DepthTexture, FlagsTexture, BakedAOTexture,
-      InstanceIdTexture;
+  vtkSmartPointer<vtkTextureObject> Targets[kGBufferTargets];  // by GBufferTarget; those of the layout only
+  vtkSmartPointer<vtkTextureObject> DepthTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkOpenGLQuadHelper* CopyQuad = nullptr;
   bool CopyToOutput = true;
-  bool Lean = false;
-  bool InstanceIds = false;
-  bool BakedAO = false;
+  GBufferOptions Options;
   bool Parallel = false;  // the camera's projection this frame (which way is "toward the eye")
   vtkTimeStamp LayoutTime;
   int Width = 0, Height = 0;

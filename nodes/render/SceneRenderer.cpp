@@ -15,6 +15,7 @@
 #include "core/Geometry.h"
 #include "core/NodeVisitor.h"
 #include "render/ActorKeys.h"
+#include "render/BakedAO.h"
 
 namespace aokit {
 
@@ -114,7 +115,7 @@ void SceneRenderer::sync() {
     ActorEntry& e = *slot;
     e.seen = syncCount_;
     if (e.meshRevision != g.meshRevision()) {
-      static_cast<vtkPolyDataMapper*>(e.actor->GetMapper())->SetInputData(polyDataFor(g.mesh()));
+      setActorInput(e.actor, polyDataFor(g.mesh()));  // keeps baked AO that still fits
       e.meshRevision = g.meshRevision();
     }
     if (e.geometryRevision != g.revision() || e.mode != mode_) {

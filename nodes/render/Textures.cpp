@@ -129,4 +129,29 @@ std::size_t textureBytes(const vtkTextureObject* t) {
   return perTexel * faces * tex->GetWidth() * std::max(1u, tex->GetHeight()) * std::max(1u, tex->GetDepth());
 }
 
+void ensureTexture2D(vtkSmartPointer<vtkTextureObject>& t, vtkOpenGLRenderWindow* renWin, TexFormat format,
+                     int width, int height) {
+  const GLFormat g = glFormat(format);
+  if (!t || t->GetInternalFormat(VTK_VOID, 0, false) != g.internalFormat) {
+    t = makeTexture2D(renWin, format, width, height);
+  } else if (static_cast<int>(t->GetWidth()) != width || static_cast<int>(t->GetHeight()) != height) {
+    t->Resize(width, height);
+  }
+}
+
+ActiveTextures::ActiveTextures(std::initializer_list<vtkTextureObject*> textures)
+    : ActiveTextures(std::vector<vtkTextureObject*>(textures)) {}
+
+ActiveTextures::ActiveTextures(const std::vector<vtkTextureObject*>& textures) {
+  for (vtkTextureObject* t : textures)
+    if (t) {
+      t->Activate();
+      active_.push_back(t);
+    }
+}
+
+ActiveTextures::~ActiveTextures() {
+  for (auto it = active_.rbegin(); it != active_.rend(); ++it) (*it)->Deactivate();
+}
+
 }  // namespace aokit

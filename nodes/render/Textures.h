@@ -3,6 +3,8 @@
 // maps and buffer textures, each with its GL format spelled out once. Every AO family builds its
 // targets and look-up tables through these, so formats and byte counts stay consistent.
 #include <cstddef>
+#include <initializer_list>
+#include <vector>
 
 #include <vtkSmartPointer.h>
 
@@ -41,6 +43,11 @@ vtkSmartPointer<vtkTextureObject> makeTexture2D(vtkOpenGLRenderWindow* renWin, T
                                                 int height, const void* data = nullptr,
                                                 TexFilter filter = TexFilter::Nearest);
 
+// Makes `t` a width x height texture of the format: allocated when null or of another format,
+// resized when of another size, left alone otherwise (render targets that follow the screen).
+void ensureTexture2D(vtkSmartPointer<vtkTextureObject>& t, vtkOpenGLRenderWindow* renWin, TexFormat format,
+                     int width, int height);
+
 // A 3D texture (clamped), `data` as above with x fastest, then y, then z.
 vtkSmartPointer<vtkTextureObject> makeTexture3D(vtkOpenGLRenderWindow* renWin, TexFormat format, int width,
                                                 int height, int depth, const void* data = nullptr,
@@ -57,5 +64,18 @@ vtkSmartPointer<vtkTextureObject> makeBufferTexture(vtkOpenGLRenderWindow* renWi
 
 // GPU bytes of a texture made by these helpers (0 for null).
 std::size_t textureBytes(const vtkTextureObject* texture);
+
+// Textures bound to texture units while alive (null entries skipped), released in reverse order.
+class ActiveTextures {
+ public:
+  explicit ActiveTextures(std::initializer_list<vtkTextureObject*> textures);
+  explicit ActiveTextures(const std::vector<vtkTextureObject*>& textures);
+  ~ActiveTextures();
+  ActiveTextures(const ActiveTextures&) = delete;
+  ActiveTextures& operator=(const ActiveTextures&) = delete;
+
+ private:
+  std::vector<vtkTextureObject*> active_;
+};
 
 }  // namespace aokit

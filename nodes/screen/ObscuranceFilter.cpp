@@ -16,7 +16,7 @@ bool ObscuranceFilter::ready(vtkOpenGLRenderWindow* renWin, const ObscuranceCons
 
 bool ObscuranceFilter::run(vtkOpenGLRenderWindow* renWin, vtkOpenGLFramebufferObject* fbo, vtkTextureObject* raw,
                            vtkTextureObject* viewZ, vtkTextureObject* out, const ObscuranceConstants& c) {
-  vtkShaderProgram* p = stage_.ready(renWin, c.defines());
+  vtkShaderProgram* p = stage_.ready(renWin, c.defines());  // a bind when already built for c
   if (!p) return false;
   raw->Activate();
   viewZ->Activate();

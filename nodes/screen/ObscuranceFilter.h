@@ -23,6 +23,8 @@ class ObscuranceFilter {
   // Builds the program for these constants without drawing (nullptr on a compile failure).
   bool ready(vtkOpenGLRenderWindow* renWin, const ObscuranceConstants& c);
   void release(vtkWindow* window = nullptr) { stage_.release(window); }
+  // The stage itself, for a pass's plan (defines: ObscuranceConstants::defines()).
+  FullScreenStage& stage() { return stage_; }
 
  private:
   FullScreenStage stage_;

@@ -6,7 +6,7 @@
 //   ao->SetDelegatePass(steps);   // optional: vtkRenderStepsPass by default
 //   aokit::ObscuranceSettings s;  // defaults below; radius 0 = SetSceneRadius, else a tenth of
 //   s.samples = 16;               //   the diagonal of the visible bounds
-//   ao->SetSettings(s);
+//   ao->SetSettings(s);           // or from text: obscuranceSchema().set(s, "samples", "16")
 //   renderer->SetPass(ao);
 //
 // It is a DeferredAOPass (render/DeferredAOPass.h: G-buffer, upsampling, combine, read-back,
@@ -45,10 +45,6 @@ class ObscurancePass : public DeferredAOPass {
   // Throws std::invalid_argument (one line) on bad settings and keeps the previous ones.
   void SetSettings(const ObscuranceSettings& s);
   const ObscuranceSettings& GetSettings() const { return Settings; }
-  // The AO radius and falloff used when the settings leave them open (AOScene's, usually).
-  // Radius 0: a tenth of the diagonal of the renderer's visible bounds.
-  void SetSceneRadius(double r);
-  void SetSceneFalloff(Falloff f);
   // The constants of the last frame (resolved radius, samples, ...).
   const ObscuranceConstants& GetConstants() const { return Constants; }
 
@@ -56,21 +52,17 @@ class ObscurancePass : public DeferredAOPass {
   ObscurancePass();
   ~ObscurancePass() override;
 
-  DeferredConfig Configure(vtkRenderer* renderer) override;
-  const char* ReadyFamily(const DeferredFrame& f) override;
+  const DeferredSettings& CommonSettings() const override { return Settings.common; }
+  void Plan(const FrameContext& context, DeferredPlan& plan) override;
   vtkTextureObject* RenderAO(DeferredFrame& f) override;
   std::size_t FamilyMemoryBytes() const override;
   void ReleaseFamily(vtkWindow* w) override;
 
  private:
-  std::string StageDefines(const DeferredFrame& f) const;
-
   ObscuranceSettings Settings;
   ObscuranceConstants Constants;
   bool ConstantsValid = false;
-  double SceneRadius = 0.0;
-  Falloff SceneFalloff = Falloff::Binary;
-  double ResolvedSceneRadius = -1.0;  // the scene radius Constants were built with
+  FrameContext ConstantsContext;  // the context Constants were built for
 
   vtkSmartPointer<vtkTextureObject> FilteredTarget;  // the filter's output, at the AO target's size
   std::unique_ptr<FullScreenStage> ObscuranceStage;

@@ -9,29 +9,29 @@
 
 namespace aokit {
 
-namespace {
-[[noreturn]] void fail(const std::string& field, const std::string& rule, double got) {
-  std::ostringstream msg;
-  msg << "obscurance: " << field << " must be " << rule << ", got " << got;
-  throw std::invalid_argument(msg.str());
+const Schema<ObscuranceSettings>& obscuranceSchema() {
+  static const Schema<ObscuranceSettings> schema = [] {
+    using S = ObscuranceSettings;
+    Schema<S> t("obscurance");
+    includeDeferred(t, {{AOScale::Full, AOScale::Half, AOScale::Quarter},
+                        {DebugView::Off, DebugView::AO, DebugView::Normals, DebugView::Depth}});
+    t.integer("samples", &S::samples, 1, 64, "rays per pixel");
+    t.integer("m", &S::pointsPerRay, 1, 4, "containment tests along each ray");
+    t.choice("interleave", &S::interleave,
+             {{"shifts", Interleave::Shifts}, {"rotations", Interleave::Rotations}, {"off", Interleave::Off}},
+             "16 sets over a 4x4 pixel pattern: toroidal shifts, the seed's rotations, or one set");
+    t.flag("filter", &S::filter, "4x4 depth-aware box filter over the interleave pattern");
+    t.flag("silhouette", &S::silhouetteElimination, "silhouette elimination (0 < z - z* < thickness)");
+    t.number("thickness", &S::thickness, Interval::aboveZero(4), "silhouette-elimination window, fraction of R");
+    t.flag("transfer", &S::ambientTransfer, "ambient transfer W of eq. 9 instead of obscurance");
+    t.number("bias", &S::bias, Interval::closed(0, 0.5), "depth bias of the containment test, fraction of R");
+    t.number("guard", &S::guard, Interval::closed(0, 0.5), "guard band, fraction of the screen on each side");
+    return t;
+  }();
+  return schema;
 }
-bool finite(double v) { return std::isfinite(v); }
-}  // namespace
 
-void validate(const ObscuranceSettings& s) {
-  if (s.samples < 1 || s.samples > 64) fail("samples", "in 1..64", s.samples);
-  if (!finite(s.radius) || s.radius < 0.0) fail("radius", ">= 0 (0 = the scene's AO radius)", s.radius);
-  if (s.pointsPerRay < 1 || s.pointsPerRay > 4) fail("pointsPerRay", "in 1..4", s.pointsPerRay);
-  if (s.resolutionScale != 1.0 && s.resolutionScale != 0.5)
-    fail("resolutionScale", "1 (full) or 0.5 (half)", s.resolutionScale);
-  if (!finite(s.bias) || s.bias < 0.0 || s.bias > 0.5) fail("bias", "in 0..0.5 (a fraction of R)", s.bias);
-  if (!finite(s.thickness) || s.thickness <= 0.0 || s.thickness > 4.0)
-    fail("thickness", "in (0, 4] (a fraction of R)", s.thickness);
-  if (!finite(s.filterTolerance) || s.filterTolerance <= 0.0 || s.filterTolerance > 1.0)
-    fail("filterTolerance", "in (0, 1]", s.filterTolerance);
-  if (!finite(s.guard) || s.guard < 0.0 || s.guard > 0.5)
-    fail("guard", "in 0..0.5 (a fraction of the screen size on each side)", s.guard);
-}
+void validate(const ObscuranceSettings& s) { obscuranceSchema().validate(s); }
 
 std::string ObscuranceConstants::defines() const {
   std::ostringstream d;
@@ -41,29 +41,28 @@ std::string ObscuranceConstants::defines() const {
     << "#define OBS_INTERLEAVED " << int(interleaved) << "\n"
     << "#define OBS_FILTER " << int(filter) << "\n"
     << "#define OBS_SILHOUETTE " << int(silhouette) << "\n"
-    << "#define OBS_TRANSFER " << int(transfer) << "\n"
-    << "#define OBS_DEBUG_VIEW " << debugView << "\n";
+    << "#define OBS_TRANSFER " << int(transfer) << "\n";
   return d.str();
 }
 
-ObscuranceConstants makeObscuranceConstants(const ObscuranceSettings& s, double sceneRadius, Falloff sceneFalloff) {
+ObscuranceConstants makeObscuranceConstants(const ObscuranceSettings& s, const FrameContext& frame) {
   validate(s);
-  const double R = s.radius > 0.0 ? s.radius : sceneRadius;
-  if (!finite(R) || !(R > 0.0)) fail("radius", "positive: set it or give the scene an AO radius", R);
+  const double R = frame.radius;
+  if (!std::isfinite(R) || !(R > 0.0))
+    throw std::invalid_argument("obscurance: the AO radius must be positive: set it or give the scene one");
   ObscuranceConstants c;
   c.samples = s.samples;
   c.pointsPerRay = s.pointsPerRay;
-  c.downsample = s.resolutionScale == 0.5 ? 2 : 1;
+  c.downsample = static_cast<int>(s.common.scale);
   c.interleaved = s.interleave != Interleave::Off;
   c.filter = s.filter;
   c.silhouette = s.silhouetteElimination;
   c.transfer = s.ambientTransfer;
-  c.debugView = static_cast<int>(s.debugView);
   c.radius = static_cast<float>(R);
   c.bias = static_cast<float>(s.bias * R);
   c.thickness = static_cast<float>(s.thickness * R);
-  c.filterTolerance = static_cast<float>(s.filterTolerance);
-  c.falloff = s.falloff.value_or(sceneFalloff);
+  c.filterTolerance = static_cast<float>(s.common.upsample.depthTolerance);
+  c.falloff = frame.falloff;
   const std::vector<glm::dvec3>& unitCube = cachedPoissonDisc(s.samples);
   const int sets = c.interleaved ? kInterleaveCells : 1;
   c.offsets.resize(static_cast<std::size_t>(sets) * s.samples);

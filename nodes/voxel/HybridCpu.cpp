@@ -4,7 +4,7 @@
 
 #include "core/NodeVisitor.h"
 #include "core/Scene.h"
-#include "voxel/BilateralUpsample.h"
+#include "render/BilateralUpsample.h"
 #include "voxel/CpuVoxelizer.h"
 #include "voxel/HybridMarch.h"
 
@@ -34,13 +34,13 @@ bool inAnyZone(const std::vector<Bounds>& zones, const glm::vec3& o) {
 
 // The static mode's low-resolution march: each texel with the grids its receiver needs.
 AOBuffer marchStaticDynamic(HybridCpuResult& out, const std::vector<GeometryInstance>& all, const SurfaceSamples& full,
-                            const SurfaceSamples& low, int k, const HybridSettings& s, double sceneRadius,
-                            Falloff sceneFalloff, const std::vector<std::uint8_t>& dynamicReceivers) {
+                            const SurfaceSamples& low, int k, const HybridSettings& s, const FrameContext& context,
+                            const std::vector<std::uint8_t>& dynamicReceivers) {
   const VoxelGrid dynamicGrid = voxelizeInstances(pick(all, out.plan.dynamicCasters), out.region.frame, methodFor(s), s.solid);
   VoxelGrid fullGrid = voxelizeInstances(pick(all, out.plan.staticCasters), out.region.frame, methodFor(s), s.solid);
   for (std::size_t w = 0; w < fullGrid.words().size(); ++w) fullGrid.words()[w] |= dynamicGrid.words()[w];
   out.voxels = fullGrid.count();
-  const HybridMarchConstants c = makeHybridMarchConstants(s, sceneRadius, sceneFalloff, out.region.frame);
+  const HybridMarchConstants c = makeHybridMarchConstants(s, context, out.region.frame);
   // Two batches over the same texels: dynamic receivers on the full grid, static ones near a
   // dynamic caster on the dynamic grid; the rest stay 0.
   SurfaceSamples dynamicPart = low, staticPart = low;
@@ -73,7 +73,8 @@ HybridCpuResult computeHybridAOCpu(Node& root, const Camera& camera, const Surfa
   if (gbuffer.width < 1 || gbuffer.height < 1) throw std::invalid_argument("hybrid: the G-buffer is empty");
   if (!dynamicReceivers.empty() && dynamicReceivers.size() != gbuffer.pixelCount())
     throw std::invalid_argument("hybrid: one dynamic-receiver flag per G-buffer pixel is needed");
-  const double R = s.radius > 0.0 ? s.radius : sceneRadius;
+  const FrameContext context = frameContext(s.common, sceneRadius, sceneFalloff);
+  const double R = context.radius;
   HybridCpuResult out;
   out.ao.resize(gbuffer.width, gbuffer.height);
 
@@ -95,23 +96,25 @@ HybridCpuResult computeHybridAOCpu(Node& root, const Camera& camera, const Surfa
     for (std::size_t i = 0; i < gbuffer.pixelCount(); ++i) out.ao.covered[i] = gbuffer.covered[i];
     return out;
   }
-  const int k = static_cast<int>(s.scale);
+  const int k = static_cast<int>(s.common.scale);
   const SurfaceSamples low = lowResolutionSamples(gbuffer, k);
   AOBuffer lowAO;
   if (s.staticBake) {
-    lowAO = marchStaticDynamic(out, all, gbuffer, low, k, s, sceneRadius, sceneFalloff, dynamicReceivers);
+    lowAO = marchStaticDynamic(out, all, gbuffer, low, k, s, context, dynamicReceivers);
   } else {
     const VoxelGrid grid = voxelizeInstances(pick(all, out.region.casters), out.region.frame, methodFor(s), s.solid);
     out.voxels = grid.count();
-    const HybridMarchConstants c = makeHybridMarchConstants(s, sceneRadius, sceneFalloff, out.region.frame);
+    const HybridMarchConstants c = makeHybridMarchConstants(s, context, out.region.frame);
     lowAO = marchHybridAO(grid, c, low);
   }
+  const UpsampleSettings& u = s.common.upsample;
+  if (u.window < 1) throw std::invalid_argument("hybrid: the CPU oracle upsamples with the bilateral filter only (window >= 1)");
   BilateralParams p;
   p.scale = k;
-  p.filterSize = std::max(1, s.filterSize);
-  p.normalSupport = static_cast<float>(s.normalSupport);
-  p.positionSupport = static_cast<float>(s.positionSupport * R);
-  p.aoSupport = static_cast<float>(s.aoSupport);
+  p.filterSize = u.window;
+  p.normalSupport = static_cast<float>(u.normalSupport);
+  p.positionSupport = static_cast<float>(u.positionSupport * R);
+  p.aoSupport = static_cast<float>(u.aoSupport);
   out.ao = jointBilateralUpsample(lowAO, low, gbuffer, p);
   return out;
 }

@@ -22,10 +22,10 @@ std::string HybridMarchConstants::defines() const {
   return d.str();
 }
 
-HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, double sceneRadius, Falloff sceneFalloff,
+HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const FrameContext& context,
                                               const VoxelFrame& frame) {
   validate(s);
-  const double R = s.radius > 0.0 ? s.radius : sceneRadius;
+  const double R = context.radius;
   if (!std::isfinite(R) || !(R > 0.0))
     throw std::invalid_argument("hybrid: radius must be positive: set it or give the scene an AO radius");
   if (!(frame.voxelSize > 0.0) || !std::isfinite(frame.voxelSize))
@@ -33,7 +33,7 @@ HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, double sc
   HybridMarchConstants c;
   c.rays = s.rays;
   c.steps = s.steps;
-  c.falloff = s.falloff.value_or(sceneFalloff);
+  c.falloff = context.falloff;
   c.spanTest = s.spanTest;
   c.radius = static_cast<float>(R);
   c.cosMax = static_cast<float>(std::max(0.0, std::cos(s.spread * 1.5707963267948966)));

@@ -14,6 +14,7 @@
 
 #include "core/AOScene.h"
 #include "reference/SurfaceSamples.h"
+#include "render/FrameContext.h"
 #include "voxel/HybridSettings.h"
 #include "voxel/VoxelFrame.h"
 #include "voxel/VoxelGrid.h"
@@ -38,10 +39,10 @@ struct HybridMarchConstants {
   std::string defines() const;
 };
 
-// Validates the settings, then resolves them against the scene (radius, falloff) and the grid's frame
-// (offset and jitter cell are in voxels). Throws std::invalid_argument on bad settings or when no
-// positive radius can be resolved.
-HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, double sceneRadius, Falloff sceneFalloff,
+// Validates the settings, then resolves them against the frame's context (radius, falloff:
+// render/FrameContext.h) and the grid's frame (offset and jitter cell are in voxels). Throws
+// std::invalid_argument on bad settings or a radius that is not positive.
+HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const FrameContext& context,
                                               const VoxelFrame& frame);
 
 // A(p, n) of one surface point (n unit length), in [0, 1].

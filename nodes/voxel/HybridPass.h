@@ -3,24 +3,24 @@
 // pass, for the scene-graph technique (HybridTechnique) and for plain VTK alike:
 //
 //   vtkNew<aokit::HybridPass> ao;
-//   aokit::HybridSettings s;   // defaults below
+//   aokit::HybridSettings s;   // defaults below; hybridSchema() has every key, range and help
 //   ao->SetSettings(s);        // throws std::invalid_argument (one line) on bad settings
 //   ao->SetSceneRadius(1.5);   // AO radius R when the settings leave it 0; 0 = a tenth of the
 //   renderer->SetPass(ao);     //   diagonal of the visible bounds
 //
 // It is a DeferredAOPass (render/DeferredAOPass.h); its stages, timed as "voxelize" and "march":
-//   voxelize: the region of interest (PropRegion.h: casters within R of the view frustum, cut to
-//      the budget), then the casters' triangles into the bit-packed grid on the GPU
-//      (GpuVoxelizer.h: compute shaders, ThreeAxis by default, solid parity fill);
+//   voxelize (HybridVoxelStage.h): the region of interest (PropRegion.h: casters within R of the
+//      view frustum, cut to the budget), then the casters' triangles into the bit-packed grid on
+//      the GPU (GpuVoxelizer.h: compute shaders, ThreeAxis by default, solid parity fill);
 //   march: at half (or quarter) resolution, each texel's surface point ray-marched through the
 //      grid (shaders/HybridMarchFS.glsl, exactly nodes/voxel/HybridMarch.cpp's estimator);
-// then the base's separable joint bilateral upsampling over m = filterSize pixels with the
-// settings' normal, position and AO supports ("upsample"), and the combine.
+// then the base's separable joint bilateral upsampling over the settings' window m with their
+// normal, position and AO supports ("upsample"), and the combine.
 // Every frame is voxelized anew (the method is for dynamic scenes); the region is recomputed only
 // when the camera, a caster's bounds or the radius changed, and a caster's triangles are uploaded
 // again only when its polydata changes. Casters are the renderer's visible props that cast AO
-// (ActorKeys.h) and show vtkPolyData (CasterBuffers.h). The voxel view (settings.view) ray-casts
-// the grid from the camera at full resolution.
+// (ActorKeys.h) and show vtkPolyData (CasterBuffers.h). The voxel view (view=voxels) ray-casts
+// the grid from the camera over the frame (an overlay after the combine).
 //
 // Static plus dynamic (settings.staticBake; StaticDynamic.h): props marked static (ActorKeys.h
 // propDynamic false) carry per-vertex AO baked from the static casters (StaticProps.h: the
@@ -37,16 +37,11 @@
 #include <string>
 
 #include "render/DeferredAOPass.h"
-#include "voxel/CasterBuffers.h"
-#include "voxel/CpuVoxelizer.h"
-#include "voxel/HybridMarch.h"
 #include "voxel/HybridSettings.h"
-#include "voxel/PropRegion.h"
+#include "voxel/HybridVoxelStage.h"
 
 namespace aokit {
 
-class FullScreenStage;
-class GpuVoxelizer;
 class VoxelGrid;
 
 class HybridPass : public DeferredAOPass {
@@ -58,58 +53,36 @@ class HybridPass : public DeferredAOPass {
   // Throws std::invalid_argument (one line) on bad settings and keeps the previous ones.
   void SetSettings(const HybridSettings& s);
   const HybridSettings& GetSettings() const { return Settings; }
-  // The AO radius and falloff used when the settings leave them open (AOScene's, usually).
-  void SetSceneRadius(double r);
-  void SetSceneFalloff(Falloff f);
 
   // What the last frame used: its region (empty: no caster near the view, AO 0), the march's
   // constants, the casters voxelized (static mode: dynamic and static grids together).
-  const VoxelRegion& GetRegion() const { return Region; }
-  const HybridMarchConstants& GetConstants() const { return Constants; }
-  std::size_t GetVoxelizedCasters() const { return VoxelizedCasters; }
-  std::size_t GetVoxelizedStaticCasters() const { return VoxelizedStatic; }
-  const std::vector<Bounds>& GetDynamicZones() const { return Zones; }  // static mode
-  int GetRegionComputations() const { return Regions.recomputed() + Plans.recomputed(); }
-  std::size_t GetCasterUploads() const { return Buffers.uploads(); }
+  const VoxelRegion& GetRegion() const { return Voxels.region(); }
+  const HybridMarchConstants& GetConstants() const { return Voxels.constants(); }
+  std::size_t GetVoxelizedCasters() const { return Voxels.voxelizedCasters(); }
+  std::size_t GetVoxelizedStaticCasters() const { return Voxels.voxelizedStaticCasters(); }
+  const std::vector<Bounds>& GetDynamicZones() const { return Voxels.zones(); }  // static mode
+  int GetRegionComputations() const { return Voxels.regionComputations(); }
+  std::size_t GetCasterUploads() const { return Voxels.casterUploads(); }
   // The last frame's grid, read back word for word (context current); false before one.
-  bool ReadGrid(vtkOpenGLRenderWindow* renWin, VoxelGrid& out);
+  bool ReadGrid(vtkOpenGLRenderWindow* renWin, VoxelGrid& out) { return Voxels.readGrid(renWin, out); }
 
  protected:
   HybridPass();
   ~HybridPass() override;
 
-  DeferredConfig Configure(vtkRenderer* renderer) override;
-  const char* ReadyFamily(const DeferredFrame& f) override;
+  const DeferredSettings& CommonSettings() const override { return Settings.common; }
+  void Plan(const FrameContext& context, DeferredPlan& plan) override;
   vtkTextureObject* RenderAO(DeferredFrame& f) override;
-  std::size_t FamilyMemoryBytes() const override;
+  void RenderOverlay(DeferredFrame& f) override;
+  std::size_t FamilyMemoryBytes() const override { return Voxels.memoryBytes(); }
   void ReleaseFamily(vtkWindow* w) override;
 
  private:
-  double ResolvedRadius(vtkRenderer* renderer) const;
-  std::string MarchDefines() const;
-  void Voxelize(DeferredFrame& f);
-  void VoxelizeStaticDynamic(DeferredFrame& f, const FrameCasters& casters);
-  void BindGrid(vtkShaderProgram* p, const DeferredFrame& f);
-  void UnbindGrid();
-  bool StaticMode() const { return Settings.staticBake; }
+  std::string MarchDefines(const FrameContext& context) const;
 
   HybridSettings Settings;
-  double SceneRadius = 0.0;
-  Falloff SceneFalloff = Falloff::Binary;
-  double Radius = 1.0;  // resolved this frame
-  VoxelRegion Region;
-  std::vector<Bounds> Zones;
-  HybridMarchConstants Constants;
-  std::size_t VoxelizedCasters = 0, VoxelizedStatic = 0;
-  bool HasGrid = false;
-
-  RegionCache Regions;
-  PlanCache Plans;
-  CasterBuffers Buffers;
-  std::unique_ptr<GpuVoxelizer> Voxelizer;
-  std::unique_ptr<GpuVoxelizer> StaticVoxelizer;  // static mode: the static casters meeting the region
+  HybridVoxelStage Voxels;
   std::unique_ptr<FullScreenStage> MarchStage, VoxelViewStage;
-  vtkSmartPointer<vtkTextureObject> EmptyGrid;  // bound when no grid exists (a sampler needs a texture)
 
   HybridPass(const HybridPass&) = delete;
   void operator=(const HybridPass&) = delete;
@@ -119,8 +92,5 @@ class HybridPass : public DeferredAOPass {
 // iterations in all (a GPU has no such limit, but long invocations risk its watchdog), so heavy
 // settings march in several passes. All rays when there is no grid.
 int raysPerMarchPass(const HybridMarchConstants& c, bool hasGrid);
-
-// The voxelizer a VoxelizingFrame setting stands for.
-VoxelizeMethod voxelizeMethodFor(VoxelizingFrame frame);
 
 }  // namespace aokit

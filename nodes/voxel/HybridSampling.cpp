@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/Wendland.h"
+
 namespace aokit {
 
 namespace {
@@ -54,23 +56,14 @@ glm::vec3 hybridRayLocal(int i, int n, float cosMax, const glm::vec2& jitter) {
 
 float hybridStepOffset(int i, float dt) { return fract(dt + static_cast<float>(i) * kPlastic); }
 
-float wendland(float t, float h) {
-  const float q = std::abs(t) / h;
-  if (!(q < 1.0f)) return 0.0f;
-  const float s = 1.0f - q;
-  return (s * s) * (s * s) * (4.0f * q + 1.0f);
-}
-
 float hybridFalloff(Falloff f, float d, float R) {
   if (!(d < R)) return 0.0f;
   const float q = std::max(d, 0.0f) / R;
   switch (f) {
     case Falloff::Binary:
       return 1.0f;
-    case Falloff::Wendland: {
-      const float s = 1.0f - q;
-      return (s * s) * (s * s) * (4.0f * q + 1.0f);
-    }
+    case Falloff::Wendland:
+      return wendland(q, 1.0f);
     case Falloff::Sqrt:
       return 1.0f - std::sqrt(q);
     case Falloff::Exponential: {

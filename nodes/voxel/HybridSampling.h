@@ -61,8 +61,6 @@ glm::vec3 hybridRayLocal(int i, int n, float cosMax, const glm::vec2& jitter);
 // fract(dt + i * 0.754878): the step offset of ray i, in [0, 1).
 float hybridStepOffset(int i, float dt);
 
-// The Wendland kernel of eq. 3: (1 - t/h)^4 (4 t/h + 1) for 0 <= t <= h, 0 beyond (|t| for t < 0).
-float wendland(float t, float h);
 // k(d) of reference/Falloff.h in float (the GLSL version): 0 for d >= R.
 float hybridFalloff(Falloff f, float d, float R);
 

@@ -7,63 +7,81 @@
 
 namespace aokit {
 
-namespace {
-[[noreturn]] void fail(const std::string& field, const std::string& rule, double got) {
-  std::ostringstream msg;
-  msg << "hybrid: " << field << " must be " << rule << ", got " << got;
-  throw std::invalid_argument(msg.str());
-}
-bool finite(double v) { return std::isfinite(v); }
-bool inRange(double v, double lo, double hi) { return finite(v) && v >= lo && v <= hi; }
-bool inOpenClosed(double v, double lo, double hi) { return finite(v) && v > lo && v <= hi; }
-}  // namespace
-
 std::size_t packedGridBytes(int nx, int ny, int nz) {
   if (nx <= 0 || ny <= 0 || nz <= 0) return 0;
   const std::size_t slabs = (static_cast<std::size_t>(nz) + 127) / 128;
   return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * slabs * 16;
 }
 
+bool hasFixedRegion(const HybridSettings& s) {
+  return s.regionBox.min != glm::dvec3(0.0) || s.regionBox.max != glm::dvec3(0.0);
+}
+
+namespace {
+
+double gridMiB(const HybridSettings& s) {
+  return packedGridBytes(s.gridResolution, s.gridResolution, s.gridResolution) / (1024.0 * 1024.0);
+}
+
+// The schema's rule message cannot hold numbers; validate() says them.
+void checkBudget(const HybridSettings& s) {
+  if (gridMiB(s) <= s.memoryBudgetMiB) return;
+  std::ostringstream msg;
+  msg << "hybrid: a " << s.gridResolution << "^3 grid needs " << gridMiB(s) << " MiB, over the memory budget of "
+      << s.memoryBudgetMiB << " MiB (raise the budget, or lower the resolution)";
+  throw std::invalid_argument(msg.str());
+}
+
+}  // namespace
+
+const Schema<HybridSettings>& hybridSchema() {
+  static const Schema<HybridSettings> schema = [] {
+    using S = HybridSettings;
+    Schema<S> t("hybrid");
+    includeDeferred(t, {{AOScale::Full, AOScale::Half, AOScale::Quarter},
+                        {DebugView::Off, DebugView::AO, DebugView::Normals, DebugView::Depth, DebugView::Voxels}});
+    t.integer("res", &S::gridResolution, 64, 1024, "voxels on the region's longest side");
+    t.number("budget", &S::memoryBudgetMiB, Interval::aboveZero(4096), "MiB the grid may hold (res^3 checked before allocating)");
+    t.choice("frame", &S::frame,
+             {{"three-axis", VoxelizingFrame::ThreeAxis}, {"rotated", VoxelizingFrame::Rotated},
+              {"dominant", VoxelizingFrame::DominantAxis}},
+             "voxelizer: conservative three-axis, the seed's rotated single direction, dominant axis");
+    t.integer("seed", &S::frameSeed, 0, 2147483647, "rotated frame: seed of the random rotation");
+    t.flag("solid", &S::solid, "fill the inside of closed casters");
+    t.flag("lattice", &S::snapToLattice, "voxel size and origin on a fixed lattice (temporal stability)");
+    t.number("region", &S::regionBudget, Interval::closed(4, 1024), "longest side of the view's region of interest, units of R");
+    const char* axes = "xyz";
+    for (int a = 0; a < 3; ++a) {
+      t.number(std::string("b") + axes[a] + "0", [a](auto& s) -> auto& { return s.regionBox.min[a]; },
+               Interval::closed(-1e15, 1e15), std::string("fixed region instead of the view's: min ") + axes[a] +
+                                                 " (all six of bx0..bz1, or none)");
+    }
+    for (int a = 0; a < 3; ++a) {
+      t.number(std::string("b") + axes[a] + "1", [a](auto& s) -> auto& { return s.regionBox.max[a]; },
+               Interval::closed(-1e15, 1e15), std::string("fixed region: max ") + axes[a]);
+    }
+    t.integer("rays", &S::rays, 1, 256, "rays per AO-map pixel");
+    t.integer("steps", &S::steps, 1, 256, "grid tests per ray");
+    t.flag("span", &S::spanTest, "each step tests the voxels since the last one in its column");
+    t.number("spread", &S::spread, Interval::aboveZero(1), "cone half-angle, fraction of 90 degrees");
+    t.number("offset", &S::normalOffset, Interval::closed(0, 4), "ray origins lifted along the normal, voxels");
+    t.number("cell", &S::jitterCell, Interval::aboveZero(16), "object-space jitter cell, voxels");
+    t.integer("noise", &S::jitterSeed, 0, 4294967295LL, "seed of the jitter noise pattern");
+    t.flag("static", &S::staticBake,
+           "static geometry (node mask without kDynamic) baked per vertex once; the grids cover the dynamic casters' region");
+    t.integer("bakerays", &S::bakeRays, 1, 4096, "static bake: rays per vertex");
+    t.rule([](const S& s) {
+      const Bounds& b = s.regionBox;
+      return !hasFixedRegion(s) || (b.max.x > b.min.x && b.max.y > b.min.y && b.max.z > b.min.z);
+    }, "a fixed region needs all of bx0, by0, bz0, bx1, by1, bz1, a box of positive volume");
+    return t;
+  }();
+  return schema;
+}
+
 void validate(const HybridSettings& s) {
-  if (s.gridResolution < 64 || s.gridResolution > 1024) fail("gridResolution", "in 64..1024", s.gridResolution);
-  if (!inOpenClosed(s.memoryBudgetMiB, 0.0, 4096.0)) fail("memoryBudgetMiB", "in (0, 4096]", s.memoryBudgetMiB);
-  const double needMiB = packedGridBytes(s.gridResolution, s.gridResolution, s.gridResolution) / (1024.0 * 1024.0);
-  if (needMiB > s.memoryBudgetMiB) {
-    std::ostringstream msg;
-    msg << "hybrid: a " << s.gridResolution << "^3 grid needs " << needMiB << " MiB, over the memory budget of "
-        << s.memoryBudgetMiB << " MiB (raise the budget, or lower the resolution)";
-    throw std::invalid_argument(msg.str());
-  }
-  if (s.frame != VoxelizingFrame::ThreeAxis && s.frame != VoxelizingFrame::Rotated &&
-      s.frame != VoxelizingFrame::DominantAxis)
-    fail("frame", "ThreeAxis, Rotated or DominantAxis", static_cast<int>(s.frame));
-  if (s.region == RegionMode::Box) {
-    const Bounds& b = s.regionBox;
-    const bool finiteBox = finite(b.min.x) && finite(b.min.y) && finite(b.min.z) && finite(b.max.x) &&
-                           finite(b.max.y) && finite(b.max.z);
-    if (!finiteBox || !(b.max.x > b.min.x && b.max.y > b.min.y && b.max.z > b.min.z))
-      throw std::invalid_argument("hybrid: regionBox must be a finite box of positive volume in Box mode");
-  } else if (s.region != RegionMode::Auto) {
-    fail("region", "Auto or Box", static_cast<int>(s.region));
-  }
-  if (!inRange(s.regionBudget, 4.0, 1024.0)) fail("regionBudget", "in 4..1024 (units of R)", s.regionBudget);
-  if (s.rays < 1 || s.rays > 256) fail("rays", "in 1..256", s.rays);
-  if (s.steps < 1 || s.steps > 256) fail("steps", "in 1..256", s.steps);
-  if (s.scale != AOMapScale::Half && s.scale != AOMapScale::Quarter)
-    fail("scale", "2 (half) or 4 (quarter)", static_cast<int>(s.scale));
-  if (!inOpenClosed(s.spread, 0.0, 1.0)) fail("spread", "in (0, 1] (a fraction of 90 degrees)", s.spread);
-  if (!finite(s.radius) || s.radius < 0.0) fail("radius", ">= 0 (0 = the scene's AO radius)", s.radius);
-  if (!inRange(s.normalOffset, 0.0, 4.0)) fail("normalOffset", "in 0..4 (voxels)", s.normalOffset);
-  if (!inOpenClosed(s.jitterCell, 0.0, 16.0)) fail("jitterCell", "in (0, 16] (voxels)", s.jitterCell);
-  if (s.filterSize < 0 || s.filterSize > 64) fail("filterSize", "in 0..64 (pixels; 0 = off)", s.filterSize);
-  if (!inOpenClosed(s.normalSupport, 0.0, 2.0)) fail("normalSupport", "in (0, 2]", s.normalSupport);
-  if (!inOpenClosed(s.positionSupport, 0.0, 4.0))
-    fail("positionSupport", "in (0, 4] (units of R)", s.positionSupport);
-  if (!inOpenClosed(s.aoSupport, 0.0, 1.0)) fail("aoSupport", "in (0, 1]", s.aoSupport);
-  if (s.bakeRays < 1 || s.bakeRays > 4096) fail("bakeRays", "in 1..4096", s.bakeRays);
-  if (s.view != HybridView::None && s.view != HybridView::AO && s.view != HybridView::Normals &&
-      s.view != HybridView::Depth && s.view != HybridView::Voxels)
-    fail("view", "none, ao, normals, depth or voxels", static_cast<int>(s.view));
+  hybridSchema().validate(s);
+  checkBudget(s);
 }
 
 }  // namespace aokit

@@ -10,44 +10,35 @@
 // casters (StaticBake.h: node masks without kDynamic), and attach()/update() put it on their actors
 // (StaticProps.h). The bake is made once, for the scene's R and falloff then: static geometry that
 // moves afterwards keeps its old values.
-#include <cstdint>
-
-#include <vtkSmartPointer.h>
-
-#include "core/AOTechnique.h"
-#include "voxel/HybridPass.h"
+#include "render/PassTechnique.h"
 #include "voxel/HybridSettings.h"
 #include "voxel/StaticBake.h"
 
-class vtkRenderPass;
-
 namespace aokit {
 
-class HybridTechnique : public AOTechnique {
+class HybridPass;
+
+class HybridTechnique : public PassTechnique {
  public:
   // Throws std::invalid_argument (one line) on bad settings, before anything is allocated.
   explicit HybridTechnique(HybridSettings settings = {});
-  std::string name() const override;
+  std::string name() const override { return "hybrid"; }
   void prepare(AOScene& scene, const std::function<void(double)>& progress) override;
-  void attach(vtkRenderer* renderer, AOScene& scene) override;
-  void detach(vtkRenderer* renderer) override;
-  void update(vtkRenderer* renderer, AOScene& scene) override;
-  std::size_t memoryBytes() const override;
-  bool readAO(vtkRenderer* renderer, std::vector<float>& ao) override;
-  std::optional<Falloff> falloffOverride() const override { return settings_.falloff; }
-  void setStageTiming(bool on) override;
-  StageTimes stageTimes() override;
+  std::optional<Falloff> falloffOverride() const override { return settings_.common.falloff; }
 
   const HybridSettings& settings() const { return settings_; }
-  HybridPass* pass() const { return pass_; }
+  HybridPass* pass() const;
   const StaticBake& staticBake() const { return bake_; }
+
+ protected:
+  vtkSmartPointer<vtkRenderPass> makePass() override;
+  void onUpdate(vtkRenderer* renderer, AOScene& scene) override;
+  void onDetach(vtkRenderer* renderer) override;
+  std::size_t extraMemoryBytes() const override { return bake_.memoryBytes(); }
 
  private:
   HybridSettings settings_;
-  vtkSmartPointer<HybridPass> pass_;
-  vtkSmartPointer<vtkRenderPass> previous_;
   StaticBake bake_;
-  bool timing_ = false;
 };
 
 }  // namespace aokit

@@ -104,7 +104,7 @@ VoxelRegion computePropRegion(const FrameView& v, const std::vector<Bounds>& cas
                               const HybridSettings& s) {
   validate(s);
   if (!v.scene.valid()) return VoxelRegion{};
-  if (!v.parallel || s.region == RegionMode::Box)
+  if (!v.parallel || hasFixedRegion(s))
     return computeVoxelRegion(casters, ViewFrustum::covering(v.camera, v.aspect, v.scene), R, s);
   // Parallel view: the casters within R of its box, in a fixed box cut to the budget around the
   // focal point.
@@ -116,7 +116,6 @@ VoxelRegion computePropRegion(const FrameView& v, const std::vector<Bounds>& cas
   box = cut(box, grown(Bounds{v.camera.focalPoint, v.camera.focalPoint}, 0.5 * s.regionBudget * R));
   if (!box.valid()) return VoxelRegion{};
   HybridSettings fixed = s;
-  fixed.region = RegionMode::Box;
   fixed.regionBox = box;
   const double voxel = std::max({box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z}) / s.gridResolution;
   if (!(voxel > 0.0)) return VoxelRegion{};
@@ -139,7 +138,7 @@ StaticDynamicPlan computePropStaticDynamic(const FrameView& v, const std::vector
   validate(s);
   if (!v.scene.valid()) return StaticDynamicPlan{};
   const ViewFrustum frustum = ViewFrustum::covering(v.camera, v.aspect, v.scene);
-  if (!v.parallel || s.region == RegionMode::Box) return planStaticDynamic(casters, isStatic, frustum, R, s);
+  if (!v.parallel || hasFixedRegion(s)) return planStaticDynamic(casters, isStatic, frustum, R, s);
   const VoxelRegion dyn = computePropRegion(v, dynamicBoundsOnly(casters, isStatic), R, s);
   return planAroundDynamicRegion(casters, isStatic, dyn, grown(parallelViewBox(v), R), frustum, R, s);
 }

@@ -117,7 +117,6 @@ StaticDynamicPlan planAroundDynamicRegion(const std::vector<Bounds>& casters, co
   box.max = glm::min(box.max, grown.max);
   if (!box.valid()) return StaticDynamicPlan{};
   HybridSettings fixed = settings;
-  fixed.region = RegionMode::Box;
   fixed.regionBox = box;
   return planOver(computeVoxelRegion(casters, frustum, R, fixed), casters, isStatic, R);
 }
@@ -126,7 +125,7 @@ StaticDynamicPlan planStaticDynamic(const std::vector<Bounds>& casters, const st
                                     const ViewFrustum& frustum, double R, const HybridSettings& settings) {
   checkSizes(casters, isStatic);
   validate(settings);
-  if (settings.region == RegionMode::Box)
+  if (hasFixedRegion(settings))
     return planOver(computeVoxelRegion(casters, frustum, R, settings), casters, isStatic, R);
   // The dynamic casters near the view, as the auto region finds them.
   const VoxelRegion dyn = computeVoxelRegion(dynamicBoundsOnly(casters, isStatic), frustum, R, settings);

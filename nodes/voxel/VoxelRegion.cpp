@@ -55,7 +55,7 @@ VoxelRegion computeVoxelRegion(const std::vector<Bounds>& casters, const ViewFru
   if (!(R > 0.0) || !std::isfinite(R)) throw std::invalid_argument("voxel region: R must be positive and finite");
   VoxelRegion out;
   out.coveredDepth = frustum.farDist;
-  if (s.region == RegionMode::Box) {
+  if (hasFixedRegion(s)) {
     out.box = s.regionBox;
     for (std::size_t i = 0; i < casters.size(); ++i)
       if (casters[i].valid() && intersect(casters[i], s.regionBox).valid()) out.casters.push_back(i);

@@ -24,6 +24,8 @@
 // texel or row a window pixel reads, so a GPU sums them per texel (O(m / k) reads per pixel)
 // with the domain weights of that texel's pixels added up: the same sum, in another order.
 // Uncovered pixels and texels do not contribute; a pixel with no contributor stays uncovered.
+#include <vector>
+
 #include "reference/SurfaceSamples.h"
 
 namespace aokit {
@@ -37,6 +39,10 @@ struct BilateralParams {
 };
 
 float bilateralDomainWeight(float pixels, int filterSize);
+// The GPU passes' domain weights per tap (DeferredUpsampleFS.glsl): entry o + r + ds - 1 holds the
+// sum of w(|o + t|, m) over t = 0..ds-1 with |o + t| <= r = m / 2, the weight of a texel whose
+// first pixel lies o pixels from the filtered one; 2 r + ds entries.
+std::vector<float> separableDomainWeights(int m, int ds);
 float bilateralNormalWeight(const glm::vec3& nx, const glm::vec3& ny, float support);
 float bilateralPositionWeight(const glm::vec3& px, const glm::vec3& py, float support);
 float bilateralAOWeight(float ax, float ay, float support);

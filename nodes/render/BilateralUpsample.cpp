@@ -1,15 +1,27 @@
-#include "voxel/BilateralUpsample.h"
+#include "render/BilateralUpsample.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "voxel/HybridSampling.h"
+#include "render/Wendland.h"
 
 namespace aokit {
 
 float bilateralDomainWeight(float pixels, int filterSize) { return wendland(pixels, static_cast<float>(filterSize)); }
+
+std::vector<float> separableDomainWeights(int m, int ds) {
+  const int r = m / 2;
+  std::vector<float> out(static_cast<std::size_t>(2 * r + ds), 0.0f);
+  for (int o = -r - ds + 1; o <= r; ++o) {
+    float sum = 0.0f;
+    for (int t = 0; t < ds; ++t)
+      if (std::abs(o + t) <= r) sum += wendland(static_cast<float>(std::abs(o + t)), static_cast<float>(m));
+    out[static_cast<std::size_t>(o + r + ds - 1)] = sum;
+  }
+  return out;
+}
 
 float bilateralNormalWeight(const glm::vec3& nx, const glm::vec3& ny, float support) {
   return wendland(std::max(0.0f, 1.0f - glm::dot(nx, ny)), support);

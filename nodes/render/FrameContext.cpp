@@ -1,0 +1,45 @@
+#include "render/FrameContext.h"
+
+#include <cmath>
+
+#include <vtkPropCollection.h>
+#include <vtkRenderer.h>
+
+#include "render/ActorKeys.h"
+
+#include "render/DeferredSettings.h"
+
+namespace aokit {
+
+double resolvedRadius(const DeferredSettings& s, double sceneRadius) { return s.radius > 0.0 ? s.radius : sceneRadius; }
+
+Falloff resolvedFalloff(const DeferredSettings& s, Falloff sceneFalloff) { return s.falloff.value_or(sceneFalloff); }
+
+FrameContext frameContext(const DeferredSettings& s, double sceneRadius, Falloff sceneFalloff) {
+  FrameContext c;
+  c.radius = resolvedRadius(s, sceneRadius);
+  c.falloff = resolvedFalloff(s, sceneFalloff);
+  return c;
+}
+
+double radiusFromVisibleBounds(vtkRenderer* renderer) {
+  double b[6];
+  renderer->ComputeVisiblePropBounds(b);
+  const double diag = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+                                (b[5] - b[4]) * (b[5] - b[4]));
+  return (b[0] <= b[1] && std::isfinite(diag) && diag > 0.0) ? 0.1 * diag : 1.0;
+}
+
+FrameContext resolveFrameContext(const DeferredSettings& s, double sceneRadius, Falloff sceneFalloff,
+                                 vtkRenderer* renderer) {
+  FrameContext c = frameContext(s, sceneRadius, sceneFalloff);
+  if (!(c.radius > 0.0)) c.radius = radiusFromVisibleBounds(renderer);
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* p = props->GetNextProp(it))
+    if (p->GetVisibility() && !propCastsAO(p)) c.hasNonCasters = true;
+  return c;
+}
+
+}  // namespace aokit
