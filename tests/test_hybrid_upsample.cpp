@@ -106,7 +106,9 @@ BilateralParams params(int k) {
   BilateralParams p;
   p.scale = k;
   p.filterSize = 8 * k;
+  p.normalSupport = 2.0f;    // the seed's
   p.positionSupport = 0.5f;  // R = 0.5
+  p.aoSupport = 1.0f;
   return p;
 }
 

@@ -16,7 +16,7 @@ struct PipelineSettings {
 const Schema<PipelineSettings>& pipelineSchema();
 
 struct PipelineConstants {
-  int downsample = 2;
+  int downsample = 0;
   std::string defines() const;  // "#define PIPE_DOWNSAMPLE 2\n"
 };
 

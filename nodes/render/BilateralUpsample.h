@@ -30,12 +30,13 @@
 
 namespace aokit {
 
+// The filter's parameters, all to be given (DeferredSettings.h holds the user-facing defaults).
 struct BilateralParams {
-  int filterSize = 16;          //!< m, full-resolution pixels, >= 1 (1 = nearest, no filtering)
-  int scale = 2;                //!< k: full / low resolution, 1..8
-  float normalSupport = 2.0f;   //!< h_n over 1 - <n, n'>, in (0, 2]
-  float positionSupport = 1.0f; //!< h_p, world units, > 0
-  float aoSupport = 1.0f;       //!< h_h, AO units, > 0
+  int filterSize = 0;           //!< m, full-resolution pixels, >= 1 (1 = nearest, no filtering)
+  int scale = 0;                //!< k: full / low resolution, 1..8
+  float normalSupport = 0.0f;   //!< h_n over 1 - <n, n'>, in (0, 2]
+  float positionSupport = 0.0f; //!< h_p, world units, > 0
+  float aoSupport = 0.0f;       //!< h_h, AO units, > 0
 };
 
 float bilateralDomainWeight(float pixels, int filterSize);

@@ -38,18 +38,19 @@ const Schema<ObscuranceSettings>& obscuranceSchema();
 // in 1..64, got 0") on the first bad field.
 void validate(const ObscuranceSettings& s);
 
-// Everything the shaders need, resolved against the frame.
+// Everything the shaders need, resolved against the frame (made by makeObscuranceConstants only:
+// the settings hold the defaults).
 struct ObscuranceConstants {
   // Shape: baked into the GLSL as #defines; programs rebuild only when these change.
-  int samples = 4;
-  int pointsPerRay = 4;
-  int downsample = 2;  // 1 full, 2 half, 4 quarter resolution
-  bool interleaved = true, filter = true, silhouette = true, transfer = false;
+  int samples = 0;
+  int pointsPerRay = 0;
+  int downsample = 0;  // 1 full, 2 half, 4 quarter resolution
+  bool interleaved = false, filter = false, silhouette = false, transfer = false;
   // Values: uniforms.
-  float radius = 1.0f;             // world units
-  float bias = 0.02f;              // world units
-  float thickness = 0.7f;          // world units: the silhouette-elimination window
-  float filterTolerance = 0.03f;   // fraction of view depth
+  float radius = 0.0f;           // world units
+  float bias = 0.0f;             // world units
+  float thickness = 0.0f;        // world units: the silhouette-elimination window
+  float filterTolerance = 0.0f;  // fraction of view depth
   Falloff falloff = Falloff::Binary;
   // Tangent-space offsets in units of R (length <= 1): `samples` per set, one set per 4x4 cell in
   // row-major cell order ((y mod 4) * 4 + x mod 4) when interleaved, else a single set.

@@ -22,9 +22,10 @@
 namespace aokit {
 
 // What the march shader gets: shape as #defines, values as uniforms.
+// Made by makeHybridMarchConstants (the settings hold the defaults).
 struct HybridMarchConstants {
-  int rays = 32;                      // #define HAO_RAYS
-  int steps = 8;                      // #define HAO_STEPS
+  int rays = 0;                       // #define HAO_RAYS
+  int steps = 0;                      // #define HAO_STEPS
   Falloff falloff = Falloff::Binary;  // #define HAO_FALLOFF (0 binary, 1 wendland, 2 sqrt, 3 exponential)
   bool spanTest = true;               // #define HAO_SPAN_TEST
   bool staticDynamic = false;         // #define HAO_STATIC (GPU: a second, static grid; StaticDynamic.h)
