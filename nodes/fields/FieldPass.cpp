@@ -18,6 +18,7 @@
 #include "fields/CapIntegralTable.h"
 #include "fields/ConeTables.h"
 #include "fields/HorizonLimit.h"
+#include "render/DrawBuffers.h"
 #include "render/GBufferPass.h"
 #include "render/Textures.h"
 
@@ -171,7 +172,7 @@ bool FieldPass::AttachTargets(DeferredFrame& f) {
   f.fbo->AddColorAttachment(0, f.aoTarget);
   f.fbo->AddColorAttachment(1, f.zTarget);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, DepthStencil->GetHandle(), 0);
-  f.fbo->ActivateDrawBuffers(2);
+  activateDrawBuffers(f.fbo, 2);
   f.fbo->Start(w, h);  // viewport; blend, depth and scissor tests off
   return true;
 }
@@ -283,7 +284,7 @@ bool FieldPass::RenderOccluders(DeferredFrame& f) {
   if (!AttachTargets(f)) return false;
   DrawStart(f, start);
 
-  f.fbo->ActivateDrawBuffers(1);
+  activateDrawBuffers(f.fbo, 1);  // the z target keeps what the start wrote
   state->vtkglDepthFunc(GL_GREATER);  // the receiver is nearer than the sphere's far side
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

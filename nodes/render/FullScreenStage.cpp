@@ -10,6 +10,7 @@
 #include <vtkTextureObject.h>
 
 #include "DeferredCommon.h"
+#include "render/DrawBuffers.h"
 
 namespace aokit {
 
@@ -55,7 +56,7 @@ void FullScreenStage::renderInto(vtkOpenGLFramebufferObject* fbo, std::initializ
   fbo->Bind();
   unsigned i = 0;
   for (vtkTextureObject* t : targets) fbo->AddColorAttachment(i++, t);
-  fbo->ActivateDrawBuffers(i);
+  activateDrawBuffers(fbo, static_cast<int>(i));
   vtkTextureObject* first = *targets.begin();
   fbo->Start(first->GetWidth(), first->GetHeight());  // Start, unlike StartNonOrtho, sets the viewport
   render();

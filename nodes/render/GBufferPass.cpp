@@ -26,6 +26,7 @@
 #include "GBufferCopyFS.h"
 #include "GBufferOutputFS.h"
 #include "render/ActorKeys.h"
+#include "render/DrawBuffers.h"
 #include "render/BakedAO.h"
 
 namespace aokit {
@@ -199,7 +200,7 @@ void GBufferPass::Render(const vtkRenderState* s) {
   for (std::size_t i = 0; i < layout.size(); ++i)
     Framebuffer->AddColorAttachment(static_cast<unsigned>(i), Targets[static_cast<int>(layout[i].target)]);
   Framebuffer->AddDepthAttachment(DepthTexture);
-  Framebuffer->ActivateDrawBuffers(Attachments());
+  activateDrawBuffers(Framebuffer, Attachments());
   Framebuffer->StartNonOrtho(W, H);
   state->vtkglScissor(0, 0, W, H);  // glClearBuffer obeys the scissor
   // Background must read as "not covered" in the position/normal targets whatever VTK clears to.
@@ -321,14 +322,7 @@ bool GBufferPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapp
   return true;
 }
 
-void GBufferPass::ActivateDrawBuffers(int count) {
-  // vtkOpenGLState caches draw buffers by comparing only the first `count` entries, so going from
-  // three buffers to one (same first entry) would be skipped, and back again too. Setting GL_NONE
-  // first makes each change reach GL.
-  unsigned none = GL_NONE;
-  Framebuffer->GetContext()->GetState()->vtkglDrawBuffers(1, &none);
-  Framebuffer->ActivateDrawBuffers(count);
-}
+void GBufferPass::ActivateDrawBuffers(int count) { activateDrawBuffers(Framebuffer, count); }
 
 bool GBufferPass::ReadBack(std::vector<float>& positionsVC, std::vector<float>& normalsVC) {
   if (!Framebuffer || Width == 0 || Options.lean) return false;

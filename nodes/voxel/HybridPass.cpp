@@ -15,6 +15,7 @@
 
 #include "HybridMarchFS.h"
 #include "HybridVoxelViewFS.h"
+#include "render/DrawBuffers.h"
 #include "render/FullScreenStage.h"
 
 namespace aokit {
@@ -117,7 +118,7 @@ vtkTextureObject* HybridPass::RenderAO(DeferredFrame& f) {
       f.state->PushFramebufferBindings();
       f.fbo->Bind();
       f.fbo->AddColorAttachment(0, f.aoTarget);
-      f.fbo->ActivateDrawBuffers(1);
+      activateDrawBuffers(f.fbo, 1);
       f.fbo->Start(f.targetWidth, f.targetHeight);
       f.state->vtkglEnable(GL_BLEND);
       f.state->vtkglBlendFunc(GL_ONE, GL_ONE);
