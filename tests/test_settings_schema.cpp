@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "baseline/VtkSSAOSettings.h"
+#include "fields/FieldConstants.h"
 #include "fields/FieldSettings.h"
 #include "methods/MethodRegistry.h"
 #include "pipeline/PipelineSettings.h"
@@ -187,4 +188,32 @@ TEST(SettingsSchema, TheSharedSettingsHaveOneKeyAndOneMeaningInEveryFamily) {
   }
   EXPECT_EQ(methodInfo("hybrid").settings[3].defaultText, "16");  // hybrid's window, from its struct
   EXPECT_EQ(methodInfo("field").settings[2].defaultText, "1");    // fields at full resolution
+}
+
+// The families' constants functions are pure: settings and frame in, defines and uniforms out.
+TEST(FamilyConstants, FieldModesDownsampleAndUniformsFollowTheSettings) {
+  FieldSettings s;
+  FieldConstants c = makeFieldConstants(s, FrameContext{2.0, Falloff::Binary});
+  EXPECT_EQ(c.mode, 0);
+  EXPECT_EQ(c.downsample, 1);
+  EXPECT_NE(c.defines(1, 0).find("#define FIELD_CUBES 1\n#define FIELD_GRID 0\n#define FIELD_MODE 0\n"), std::string::npos);
+  s.eval.combine = FieldCombine::Cone;
+  s.common.scale = AOScale::Quarter;
+  s.eval.insideOcclusion = 0.25;
+  c = makeFieldConstants(s, FrameContext{2.0, Falloff::Binary});
+  EXPECT_TRUE(c.cones());
+  EXPECT_NE(c.defines(0, 2).find("#define FIELD_CONE 1\n"), std::string::npos);
+  EXPECT_NE(c.defines(0, 2).find("#define FIELD_DOWNSAMPLE 4\n"), std::string::npos);
+  EXPECT_EQ(c.insideOcclusion, 0.25f);
+  s.common.view = DebugView::Count;  // the count view wins over the combine
+  EXPECT_EQ(makeFieldConstants(s, FrameContext{2.0, Falloff::Binary}).mode, 2);
+  s.eval.insideExponent = 0.0;
+  EXPECT_THROW(makeFieldConstants(s, FrameContext{2.0, Falloff::Binary}), std::invalid_argument);
+}
+
+TEST(FamilyConstants, PipelineDefinesItsDownsample) {
+  PipelineSettings s;
+  EXPECT_EQ(makePipelineConstants(s, FrameContext{}).defines(), "#define PIPE_DOWNSAMPLE 2\n");
+  s.common.scale = AOScale::Full;
+  EXPECT_EQ(makePipelineConstants(s, FrameContext{}).defines(), "#define PIPE_DOWNSAMPLE 1\n");
 }

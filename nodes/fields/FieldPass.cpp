@@ -15,9 +15,6 @@
 #include "FieldPassOccluderFS.h"
 #include "FieldPassResolveFS.h"
 #include "FieldPassStartFS.h"
-#include "fields/CapIntegralTable.h"
-#include "fields/ConeTables.h"
-#include "fields/HorizonLimit.h"
 #include "render/DrawBuffers.h"
 #include "render/GBufferPass.h"
 #include "render/Textures.h"
@@ -97,46 +94,27 @@ void FieldPass::SetBakedAO(bool on) {
   Modified();
 }
 
-int FieldPass::Mode() const {
-  if (Settings.common.view == DebugView::Count) return 2;
-  return Settings.eval.combine == FieldCombine::Cone ? 1 : 0;
-}
-
-std::string FieldPass::Defines(int cubes, int grid, int downsample) const {
-  return "#define FIELD_CUBES " + std::to_string(cubes) +
-         "\n#define FIELD_GRID " + std::to_string(grid) +
-         "\n#define FIELD_MODE " + std::to_string(Mode()) +
-         "\n#define FIELD_CONE " + std::to_string(Cones() ? 1 : 0) +
-         "\n#define FIELD_GRID_NORMALIZED " + std::to_string(Settings.eval.gridWeights == GridWeights::Normalized ? 1 : 0) +
-         "\n#define FIELD_LUT_W " + std::to_string(CapIntegralTable::kWidth) +
-         "\n#define FIELD_LUT_H " + std::to_string(CapIntegralTable::kHeight) +
-         "\n#define FIELD_CLIP_N " + std::to_string(ClipTable::kSize) +
-         "\n#define FIELD_MERGE_N " + std::to_string(MergeTable::kSize) +
-         "\n#define FIELD_HORIZON_N " + std::to_string(HorizonTable::kSize) +
-         "\n#define FIELD_DOWNSAMPLE " + std::to_string(downsample) +
-         "\n#define FIELD_TILE " + std::to_string(FieldCull::kTile) + "\n";
-}
-
-void FieldPass::Plan(const FrameContext&, DeferredPlan& plan) {
+void FieldPass::Plan(const FrameContext& context, DeferredPlan& plan) {
+  Constants = makeFieldConstants(Settings, context);
   DeferredConfig& c = plan.config;
   c.bakedAO = BakedAO;
   c.instanceIds = true;
   if (c.view == DebugView::Count) c.view = DebugView::AO;  // the counts, shown as the AO is
-  const int ds = c.downsample, grid = gridCode(FieldData);
-  Cull.plan(plan, Defines(0, 0, ds));
-  plan.stage(*StartStage, Defines(0, 0, ds));
-  if (FieldData.hasCube) plan.stage(*CubeStage, Defines(1, 0, ds));
-  if (grid) plan.stage(*GridStage, Defines(0, grid, ds));
-  if (Cones()) plan.stage(*ResolveStage, Defines(0, 0, ds));
+  const int grid = gridCode(FieldData);
+  Cull.plan(plan, Constants.defines(0, 0));
+  plan.stage(*StartStage, Constants.defines(0, 0));
+  if (FieldData.hasCube) plan.stage(*CubeStage, Constants.defines(1, 0));
+  if (grid) plan.stage(*GridStage, Constants.defines(0, grid));
+  if (Constants.cones()) plan.stage(*ResolveStage, Constants.defines(0, 0));
   if (c.view == DebugView::Slice) {
-    Slice.plan(plan, Defines(FieldData.hasCube ? 1 : 0, grid, ds));
+    Slice.plan(plan, Constants.defines(FieldData.hasCube ? 1 : 0, grid));
     plan.overlay = true;
   }
 }
 
 vtkTextureObject* FieldPass::RenderAO(DeferredFrame& f) {
   std::string error;
-  if (!Textures.upload(f.renWin, FieldData, OccluderData, Cones(), error)) {
+  if (!Textures.upload(f.renWin, FieldData, OccluderData, Constants.cones(), error)) {
     vtkErrorMacro(<< error);
     return nullptr;
   }
@@ -146,14 +124,14 @@ vtkTextureObject* FieldPass::RenderAO(DeferredFrame& f) {
 }
 
 void FieldPass::RenderOverlay(DeferredFrame& f) {
-  Slice.render(f, Textures, Settings.eval, Cones(), OccluderData.occluderCount, OccluderData.cubeCount, Settings.sliceAxis,
+  Slice.render(f, Textures, Constants, OccluderData.occluderCount, OccluderData.cubeCount, Settings.sliceAxis,
                Settings.slicePosition);
 }
 
 // The AO and z targets with the receivers' depth-stencil target, for the start and occluder draws.
 bool FieldPass::AttachTargets(DeferredFrame& f) {
   const int w = f.targetWidth, h = f.targetHeight;
-  if (Cones()) {
+  if (Constants.cones()) {
     ensureTexture2D(StateTarget, f.renWin, TexFormat::RGBA32F, w, h);
     glBindImageTexture(0, StateTarget->GetHandle(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   } else {
@@ -185,7 +163,7 @@ void FieldPass::DrawStart(DeferredFrame& f, vtkShaderProgram* p) {
   p->SetUniformi("fieldIds", ids->GetTextureUnit());
   const int target[2] = {f.targetWidth, f.targetHeight};
   p->SetUniform2i("fieldTarget", target);
-  if (Cones()) p->SetUniformi("fieldState", 0);
+  if (Constants.cones()) p->SetUniformi("fieldState", 0);
   vtkOpenGLState* state = f.state;
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_ALWAYS);
@@ -195,7 +173,7 @@ void FieldPass::DrawStart(DeferredFrame& f, vtkShaderProgram* p) {
   state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   state->vtkglStencilMask(0xFF);
   StartStage->render();
-  if (Cones()) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  if (Constants.cones()) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 // One draw per occluder of one kind whose sphere reaches the screen, scissored to the tile runs
@@ -209,15 +187,15 @@ bool FieldPass::DrawOccluders(DeferredFrame& f, const TileDepths& tiles, bool cu
   vtkShaderProgram* p = stage.use(f.renWin);
   if (!p) return false;
   vtkTextureObject* ids = f.gbuffer->GetInstanceIdTexture();
-  std::vector<vtkTextureObject*> textures = Textures.textures(Cones());
+  std::vector<vtkTextureObject*> textures = Textures.textures(Constants.cones());
   textures.push_back(ids);
   ActiveTextures inputs(textures);
   f.bindCommon(p);
-  Textures.bind(p, Settings.eval, Cones());
+  Textures.bind(p, Constants);
   p->SetUniformi("fieldIds", ids->GetTextureUnit());
   const int target[2] = {f.targetWidth, f.targetHeight};
   p->SetUniform2i("fieldTarget", target);
-  if (Cones()) p->SetUniformi("fieldState", 0);
+  if (Constants.cones()) p->SetUniformi("fieldState", 0);
   const TargetGeometry geometry = targetGeometry(f);
   glm::dmat4 worldToView;
   for (int i = 0; i < 4; ++i)
@@ -250,7 +228,7 @@ bool FieldPass::DrawOccluders(DeferredFrame& f, const TileDepths& tiles, bool cu
       DrawnTexels += rect.area();
       ++DrawCalls;
     }
-    if (Cones()) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the next occluder reads these cones
+    if (Constants.cones()) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the next occluder reads these cones
     ++DrawnOccluders;
   }
   return true;
@@ -290,7 +268,7 @@ bool FieldPass::RenderOccluders(DeferredFrame& f) {
   state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   state->vtkglStencilMask(0);
   state->vtkglEnable(GL_SCISSOR_TEST);
-  const int mode = Mode();
+  const int mode = Constants.mode;
   if (mode == 0) state->vtkglBlendFunc(GL_ONE_MINUS_DST_COLOR, GL_ONE);  // A + A_k - A A_k
   if (mode == 2) state->vtkglBlendFunc(GL_ONE, GL_ONE);                  // count
   if (mode != 1) state->vtkglEnable(GL_BLEND);
@@ -308,7 +286,7 @@ bool FieldPass::RenderOccluders(DeferredFrame& f) {
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
   f.fbo->RemoveColorAttachments(2);
   state->PopFramebufferBindings();
-  return drawn && (!Cones() || ResolveCones(f));
+  return drawn && (!Constants.cones() || ResolveCones(f));
 }
 
 std::size_t FieldPass::FamilyMemoryBytes() const {

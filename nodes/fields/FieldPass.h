@@ -79,9 +79,6 @@ class FieldPass : public DeferredAOPass {
   void ReleaseFamily(vtkWindow* w) override;
 
  private:
-  int Mode() const;  // FIELD_MODE: 0 multiply, 1 cones, 2 count
-  bool Cones() const { return Mode() == 1; }
-  std::string Defines(int cubes, int grid, int downsample) const;
   bool RenderOccluders(DeferredFrame& f);
   bool AttachTargets(DeferredFrame& f);
   void DrawStart(DeferredFrame& f, vtkShaderProgram* p);
@@ -89,6 +86,7 @@ class FieldPass : public DeferredAOPass {
   bool ResolveCones(DeferredFrame& f);
 
   FieldSettings Settings;
+  FieldConstants Constants;  // this frame's
   bool BakedAO = false;
   std::vector<std::shared_ptr<const BakedField>> Fields;
   std::vector<FieldOccluder> Occluders;

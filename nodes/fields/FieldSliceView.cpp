@@ -20,8 +20,8 @@ std::string withFieldEval(const char* stage) {
 
 FieldSliceView::FieldSliceView() : source_(withFieldEval(FieldPassSliceFS)), stage_("slice", source_.c_str()) {}
 
-void FieldSliceView::render(const DeferredFrame& f, const FieldTextures& data, const FieldEvalSettings& eval,
-                            bool cones, int occluders, int cubes, int axis, double position) {
+void FieldSliceView::render(const DeferredFrame& f, const FieldTextures& data, const FieldConstants& c, int occluders,
+                            int cubes, int axis, double position) {
   vtkShaderProgram* p = stage_.use(f.renWin);
   if (!p) return;
   vtkOpenGLState* state = f.state;
@@ -29,9 +29,9 @@ void FieldSliceView::render(const DeferredFrame& f, const FieldTextures& data, c
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-  ActiveTextures inputs(data.textures(cones));
+  ActiveTextures inputs(data.textures(c.cones()));
   f.bindCommon(p);
-  data.bind(p, eval, cones);
+  data.bind(p, c);
   p->SetUniformi("fieldOccluders", occluders);
   p->SetUniformi("fieldCubes", cubes);
   p->SetUniformi("fieldSliceAxis", axis);

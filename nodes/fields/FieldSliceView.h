@@ -10,15 +10,15 @@
 namespace aokit {
 
 class FieldTextures;
-struct FieldEvalSettings;
+struct FieldConstants;
 
 class FieldSliceView {
  public:
   FieldSliceView();
   void plan(DeferredPlan& plan, const std::string& defines) { plan.stage(stage_, defines); }
   // Blends the slice over the frame (the base's overlay: viewport set, G-buffer textures active).
-  void render(const DeferredFrame& f, const FieldTextures& data, const FieldEvalSettings& eval, bool cones,
-              int occluders, int cubes, int axis, double position);
+  void render(const DeferredFrame& f, const FieldTextures& data, const FieldConstants& c, int occluders, int cubes,
+              int axis, double position);
   void release(vtkWindow* w) { stage_.release(w); }
 
  private:

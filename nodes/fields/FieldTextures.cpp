@@ -68,7 +68,7 @@ std::vector<vtkTextureObject*> FieldTextures::textures(bool cones) const {
   return out;
 }
 
-void FieldTextures::bind(vtkShaderProgram* p, const FieldEvalSettings& eval, bool cones) const {
+void FieldTextures::bind(vtkShaderProgram* p, const FieldConstants& c) const {
   setSampler(p, "fieldTexels4", texels4_);
   setSampler(p, "fieldTexels3", texels3_);
   setSampler(p, "fieldInts", fieldInts_);
@@ -77,13 +77,13 @@ void FieldTextures::bind(vtkShaderProgram* p, const FieldEvalSettings& eval, boo
   setSampler(p, "occluderInts", occluderInts_);
   setSampler(p, "fieldCapLUT", capTable_);
   setSampler(p, "fieldHorizonLUT", horizonTable_);
-  if (cones) {
+  if (c.cones()) {
     setSampler(p, "fieldClipLUT", clipTable_);
     setSampler(p, "fieldMergeLUT", mergeTable_);
   }
-  p->SetUniformf("fieldInsideExponent", static_cast<float>(eval.insideExponent));
-  p->SetUniformf("fieldInsideOcclusion", static_cast<float>(eval.insideOcclusion));
-  p->SetUniformf("fieldBias", static_cast<float>(eval.bias));
+  p->SetUniformf("fieldInsideExponent", c.insideExponent);
+  p->SetUniformf("fieldInsideOcclusion", c.insideOcclusion);
+  p->SetUniformf("fieldBias", c.bias);
 }
 
 std::size_t FieldTextures::memoryBytes() const {

@@ -7,7 +7,7 @@
 
 #include <vtkSmartPointer.h>
 
-#include "fields/FieldEvalSettings.h"
+#include "fields/FieldConstants.h"
 #include "fields/FieldGpuData.h"
 
 class vtkOpenGLRenderWindow;
@@ -25,8 +25,9 @@ class FieldTextures {
   // when the data exceeds this GL's buffer texture size.
   bool upload(vtkOpenGLRenderWindow* renWin, const FieldGpuData& fields, const OccluderGpuData& occluders, bool cones,
               std::string& error);
-  // Binds every texture a field-evaluating stage reads (Activate first: activate()).
-  void bind(vtkShaderProgram* p, const FieldEvalSettings& eval, bool cones) const;
+  // Binds every texture a field-evaluating stage reads (active: textures()) and the evaluators'
+  // uniform values.
+  void bind(vtkShaderProgram* p, const FieldConstants& c) const;
   // Textures active on units while alive.
   std::vector<vtkTextureObject*> textures(bool cones) const;
   std::size_t memoryBytes() const;

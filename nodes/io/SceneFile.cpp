@@ -15,6 +15,7 @@
 #include "io/InputFiles.h"
 #include "io/JsonField.h"
 #include "io/MeshIO.h"
+#include "reference/Falloff.h"
 #include "scenes/BuiltinScenes.h"
 #include "scenes/SceneBuilding.h"
 #include "scenes/Shapes.h"
@@ -53,11 +54,12 @@ json parseStrict(const std::string& text, const std::string& file) {
 
 Falloff parseFalloff(const JsonField& f) {
   const std::string s = f.string();
-  if (s == "binary") return Falloff::Binary;
-  if (s == "wendland") return Falloff::Wendland;
-  if (s == "sqrt") return Falloff::Sqrt;
-  if (s == "exponential") return Falloff::Exponential;
-  f.fail("expected one of binary, wendland, sqrt, exponential");
+  std::string names;
+  for (Falloff k : kAllFalloffs) {
+    if (s == falloffName(k)) return k;
+    names += (names.empty() ? "" : ", ") + falloffName(k);
+  }
+  f.fail("expected one of " + names);
 }
 
 // Fields present in `f` override `cam`; `complete` requires position and focal point. The camera
