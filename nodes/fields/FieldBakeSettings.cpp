@@ -4,8 +4,6 @@
 
 namespace aokit {
 
-int maxFieldResolution(FieldKind) { return 128; }
-
 const Schema<FieldBakeSettings>& fieldBakeSchema() {
   static const Schema<FieldBakeSettings> schema = [] {
     using S = FieldBakeSettings;
@@ -36,6 +34,8 @@ const Schema<FieldBakeSettings>& fieldBakeSchema() {
 }
 
 void validate(const FieldBakeSettings& s) { fieldBakeSchema().validate(s); }
+
+int maxFieldResolution(FieldKind) { return static_cast<int>(fieldBakeSchema().entry("resolution").info.range.hi); }
 
 std::string fieldKindName(FieldKind k) {
   switch (k) {
