@@ -113,7 +113,7 @@ class ArrayReader {
   bool binary(Bytes runs, const std::function<void(std::uint64_t, double)>& visit, std::uint64_t& count) {
     const int hs = enc_.headerSize;
     std::string head, data;
-    if (enc_.compressor == XmlCompressor::None) {
+    if (enc_.compressor == XmlCompressor::Uncompressed) {
       if (!runs.next(hs, head)) fail("its header is missing or not valid base64");
       const std::uint64_t bytes = readWord(head.data(), hs, enc_.bigEndian);
       checkBytes(bytes);

@@ -16,13 +16,13 @@ struct XmlValueType {
 };
 XmlValueType xmlValueType(std::string_view name);
 
-enum class XmlCompressor { None, ZLib, LZ4, LZMA };
+enum class XmlCompressor { Uncompressed, ZLib, LZ4, LZMA };
 
 // What the VTKFile element and the AppendedData section say about every array.
 struct XmlEncoding {
   bool bigEndian = false;
   int headerSize = 4;  // header_type UInt32 or UInt64
-  XmlCompressor compressor = XmlCompressor::None;
+  XmlCompressor compressor = XmlCompressor::Uncompressed;
   std::string_view appended;  // the bytes after AppendedData's '_'
   bool appendedBase64 = false;
 };
