@@ -10,12 +10,41 @@
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkTextureObject.h>
+#include <vtkWeakPointer.h>
 #include <vtk_glew.h>
 
 #include "DeferredCombineFS.h"
+#include "render/DeferredUpsampler.h"
 #include "render/Textures.h"
 
 namespace aokit {
+
+// One renderer's share of the pass: its G-buffer, AO targets and last frame, so that one pass can
+// serve several renderers (viewports, views) and read each one's AO back.
+struct DeferredAOPass::View {
+  vtkWeakPointer<vtkRenderer> renderer;
+  vtkNew<GBufferPass> gbuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> framebuffer;
+  vtkSmartPointer<vtkTextureObject> aoTarget, zTarget, resultTarget;
+  DeferredUpsampler upsampler;
+  DeferredFrame frame;
+  vtkTextureObject* result = nullptr;  // the family's final AO
+  bool hasFrame = false;
+
+  std::size_t memoryBytes() const {
+    return gbuffer->MemoryBytes() + textureBytes(aoTarget) + textureBytes(zTarget) + textureBytes(resultTarget) +
+           upsampler.memoryBytes();
+  }
+  void release(vtkWindow* w) {
+    gbuffer->ReleaseGraphicsResources(w);
+    upsampler.release(w);
+    aoTarget = zTarget = resultTarget = nullptr;
+    framebuffer = nullptr;
+    result = nullptr;
+    frame = DeferredFrame{};
+    hasFrame = false;
+  }
+};
 
 namespace {
 
@@ -42,18 +71,17 @@ void check(const DeferredConfig& c) {
 
 }  // namespace
 
-DeferredAOPass::DeferredAOPass() : CombineStage("combine", DeferredCombineFS), AOOutputStage("AO output", DeferredCombineFS) {
-  GBuffer->SetLean(true);  // positions come from the depth buffer
-}
+DeferredAOPass::DeferredAOPass() : CombineStage("combine", DeferredCombineFS), AOOutputStage("AO output", DeferredCombineFS) {}
 
 DeferredAOPass::~DeferredAOPass() = default;
 
 void DeferredAOPass::SetDelegatePass(vtkRenderPass* delegate) {
-  GBuffer->SetDelegatePass(delegate);
+  Delegate = delegate;
+  for (auto& [renderer, view] : Views) view->gbuffer->SetDelegatePass(delegate);
   Modified();
 }
 
-vtkRenderPass* DeferredAOPass::GetDelegatePass() const { return GBuffer->GetDelegatePass(); }
+vtkRenderPass* DeferredAOPass::GetDelegatePass() const { return Delegate; }
 
 void DeferredAOPass::SetSceneRadius(double r) {
   if (r == SceneRadius) return;
@@ -67,8 +95,31 @@ void DeferredAOPass::SetSceneFalloff(Falloff f) {
   Modified();
 }
 
-std::string DeferredAOPass::CombineDefines(bool outputAO) const {
-  const DeferredConfig& c = Frame.config;
+DeferredAOPass::View& DeferredAOPass::ViewOf(vtkRenderer* renderer) {
+  for (auto it = Views.begin(); it != Views.end();)  // renderers gone since
+    it = it->second->renderer ? std::next(it) : Views.erase(it);
+  std::unique_ptr<View>& v = Views[renderer];
+  if (!v) {
+    v = std::make_unique<View>();
+    v->renderer = renderer;
+    v->gbuffer->SetLean(true);  // positions come from the depth buffer
+    if (Delegate) v->gbuffer->SetDelegatePass(Delegate);
+  }
+  return *v;
+}
+
+const DeferredAOPass::View* DeferredAOPass::FindView(vtkRenderer* renderer) const {
+  if (!renderer) return Current;
+  const auto it = Views.find(renderer);
+  return it != Views.end() && it->second->renderer ? it->second.get() : nullptr;
+}
+
+GBufferPass* DeferredAOPass::GetGBufferPass(vtkRenderer* renderer) const {
+  const View* v = FindView(renderer);
+  return v ? v->gbuffer.Get() : nullptr;
+}
+
+std::string DeferredAOPass::CombineDefines(const DeferredConfig& c, bool outputAO) const {
   const int upsample = c.upsample.window > 0 ? 2 : c.downsample > 1 ? 1 : 0;
   const int view = c.view == DebugView::AO || c.view == DebugView::Normals || c.view == DebugView::Depth
                        ? static_cast<int>(c.view)
@@ -87,42 +138,49 @@ const char* DeferredAOPass::Ready(const DeferredPlan& plan) {
     if (!stage->ready(Frame.renWin, defines)) return stage->name().c_str();
   for (const auto& [name, build] : plan.programs)
     if (!build()) return name.c_str();
-  if (!CombineStage.ready(Frame.renWin, CombineDefines(false))) return "combine";
+  if (!CombineStage.ready(Frame.renWin, CombineDefines(Frame.config, false))) return "combine";
   return nullptr;
 }
 
-void DeferredAOPass::AllocateTargets() {
+void DeferredAOPass::AllocateTargets(View& v, bool resultTarget) {
   const int ds = Frame.config.downsample;
   // On-screen pixels only: the guard band is read by the AO stage, never shaded.
   Frame.targetWidth = (Frame.screenWidth + ds - 1) / ds;
   Frame.targetHeight = (Frame.screenHeight + ds - 1) / ds;
-  if (!Framebuffer) {
-    Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    Framebuffer->SetContext(Frame.renWin);
+  if (!v.framebuffer) {
+    v.framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    v.framebuffer->SetContext(Frame.renWin);
   }
   const TexFormat format = Frame.config.aoChannels == 4 ? TexFormat::RGBA32F : TexFormat::R32F;
-  ensureTexture2D(AOTarget, Frame.renWin, format, Frame.targetWidth, Frame.targetHeight);
-  ensureTexture2D(ZTarget, Frame.renWin, TexFormat::R32F, Frame.targetWidth, Frame.targetHeight);
-  Upsampler.allocate(Frame);
-  Frame.aoTarget = AOTarget;
-  Frame.zTarget = ZTarget;
-  Frame.fbo = Framebuffer;
+  ensureTexture2D(v.aoTarget, Frame.renWin, format, Frame.targetWidth, Frame.targetHeight);
+  ensureTexture2D(v.zTarget, Frame.renWin, TexFormat::R32F, Frame.targetWidth, Frame.targetHeight);
+  if (resultTarget) ensureTexture2D(v.resultTarget, Frame.renWin, format, Frame.targetWidth, Frame.targetHeight);
+  else v.resultTarget = nullptr;
+  v.upsampler.allocate(Frame);
+  Frame.aoTarget = v.aoTarget;
+  Frame.zTarget = v.zTarget;
+  Frame.resultTarget = v.resultTarget;
+  Frame.fbo = v.framebuffer;
 }
 
 void DeferredAOPass::Render(const vtkRenderState* s) {
   vtkOpenGLClearErrorMacro();
   NumberOfRenderedProps = 0;
-  HasFrame = false;
   vtkRenderer* r = s->GetRenderer();
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(r->GetRenderWindow());
   vtkOpenGLState* state = renWin->GetState();
   StateGuards guards(state);
+  View& v = ViewOf(r);
+  Current = &v;
+  v.hasFrame = false;
 
   // 1. The plan, and every program built before drawing: if one fails, the G-buffer shows the
   // frame without AO.
+  Frame = DeferredFrame{};
   Frame.renderer = r;
   Frame.renWin = renWin;
   Frame.state = state;
+  Frame.timer = &Timer;
   Frame.context = resolveFrameContext(CommonSettings(), SceneRadius, SceneFalloff, r);
   DeferredPlan plan;
   plan.renWin = renWin;
@@ -130,36 +188,36 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   Plan(Frame.context, plan);
   check(plan.config);
   Frame.config = plan.config;
-  Upsampler.plan(plan, CombineDefines(false));
-  GBuffer->SetGuardBand(Frame.config.guard);
-  GBuffer->SetInstanceIds(Frame.config.instanceIds);
-  GBuffer->SetBakedAO(Frame.config.bakedAO);
+  v.upsampler.plan(plan, CombineDefines(Frame.config, false));
+  GBufferPass* gbuffer = v.gbuffer;
+  gbuffer->SetGuardBand(Frame.config.guard);
+  gbuffer->SetInstanceIds(Frame.config.instanceIds);
+  gbuffer->SetBakedAO(Frame.config.bakedAO);
   Timer.begin();
   const char* failed = Ready(plan);
-  if (failed && ReportedFailure != failed + CombineDefines(false)) {
+  if (failed && ReportedFailure != failed + CombineDefines(Frame.config, false)) {
     vtkErrorMacro("the " << failed << " stage did not compile (log above); showing the frame without AO");
-    ReportedFailure = failed + CombineDefines(false);
+    ReportedFailure = failed + CombineDefines(Frame.config, false);
   }
 
   // 2. The G-buffer.
-  GBuffer->SetCopyToOutput(failed != nullptr);
-  GBuffer->Render(s);
-  NumberOfRenderedProps = GBuffer->GetNumberOfRenderedProps();
+  gbuffer->SetCopyToOutput(failed != nullptr);
+  gbuffer->Render(s);
+  NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
   Frame.mark("gbuffer");
   if (failed) return;
 
   // 3. The family's AO stages, 4. upsampling.
-  Frame.setView(r, GBuffer);
-  Frame.timer = &Timer;
-  AllocateTargets();
+  Frame.setView(r, gbuffer);
+  AllocateTargets(v, plan.resultTarget);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  ActiveTextures gbufferTextures{GBuffer->GetDepthTexture(), GBuffer->GetNormalTexture(), GBuffer->GetColorTexture(),
-                                 GBuffer->GetFlagsTexture()};
-  Result = RenderAO(Frame);
+  ActiveTextures gbufferTextures{gbuffer->GetDepthTexture(), gbuffer->GetNormalTexture(), gbuffer->GetColorTexture(),
+                                 gbuffer->GetFlagsTexture()};
+  v.result = RenderAO(Frame);
   const bool filtering = Frame.config.upsample.window > 0;
-  const bool upsampled = Result && (!filtering || Upsampler.run(Frame, Result));
+  const bool upsampled = v.result && (!filtering || v.upsampler.run(Frame, v.result));
   if (upsampled && filtering) Frame.mark("upsample");
 
   // 5. The combine, 6. the overlay.
@@ -171,12 +229,13 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   state->vtkglDepthFunc(GL_ALWAYS);
   state->vtkglDepthMask(GL_TRUE);
   if (!upsampled) {  // a stage failed after the G-buffer: show the frame without AO
-    GBuffer->CopyToFramebuffer(renWin);
+    gbuffer->CopyToFramebuffer(renWin);
     return;
   }
-  HasFrame = Combine(CombineStage, false, [&] { CombineStage.render(); });
+  v.frame = Frame;
+  v.hasFrame = Combine(v, CombineStage, false, [&] { CombineStage.render(); });
   Frame.mark("combine");
-  if (HasFrame && plan.overlay) {
+  if (v.hasFrame && plan.overlay) {
     state->vtkglDisable(GL_DEPTH_TEST);
     RenderOverlay(Frame);
   }
@@ -184,27 +243,32 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
 }
 
 template <class Draw>
-bool DeferredAOPass::Combine(FullScreenStage& stage, bool outputAO, Draw&& draw) {
-  vtkShaderProgram* p = outputAO ? stage.ready(Frame.renWin, CombineDefines(true)) : stage.use(Frame.renWin);
+bool DeferredAOPass::Combine(View& v, FullScreenStage& stage, bool outputAO, Draw&& draw) {
+  const DeferredFrame& f = v.frame;
+  vtkShaderProgram* p = outputAO ? stage.ready(f.renWin, CombineDefines(f.config, true)) : stage.use(f.renWin);
   if (!p) return false;
-  ActiveTextures inputs{Result, ZTarget, Upsampler.rows(), Upsampler.guide(), GBuffer->GetBakedAOTexture()};
-  Frame.bindCommon(p);
-  p->SetUniformi("aoResult", Result->GetTextureUnit());
-  p->SetUniformi("aoResultZ", ZTarget->GetTextureUnit());
-  Upsampler.bindRows(p);
-  if (Frame.config.bakedAO) p->SetUniformi("aoBaked", GBuffer->GetBakedAOTexture()->GetTextureUnit());
-  p->SetUniformi("aoDownsample", Frame.config.downsample);
-  p->SetUniformf("aoTolerance", static_cast<float>(Frame.config.upsample.depthTolerance));
-  p->SetUniformf("aoRadius", static_cast<float>(Frame.config.radius));
-  DeferredUpsampler::setKernelUniforms(p, Frame.config);
+  GBufferPass* gbuffer = v.gbuffer;
+  ActiveTextures inputs{v.result, v.zTarget, v.upsampler.rows(), v.upsampler.guide(), gbuffer->GetBakedAOTexture()};
+  f.bindCommon(p);
+  p->SetUniformi("aoResult", v.result->GetTextureUnit());
+  p->SetUniformi("aoResultZ", v.zTarget->GetTextureUnit());
+  v.upsampler.bindRows(p);
+  if (f.config.bakedAO) p->SetUniformi("aoBaked", gbuffer->GetBakedAOTexture()->GetTextureUnit());
+  p->SetUniformi("aoDownsample", f.config.downsample);
+  p->SetUniformf("aoTolerance", static_cast<float>(f.config.upsample.depthTolerance));
+  p->SetUniformf("aoRadius", static_cast<float>(f.config.radius));
+  DeferredUpsampler::setKernelUniforms(p, f.config);
   draw();
   return true;
 }
 
-bool DeferredAOPass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& ao, std::vector<std::uint8_t>* covered) {
-  if (!HasFrame) return false;
-  const int w = Frame.screenWidth, h = Frame.screenHeight;
-  const bool rgba = Frame.config.aoChannels == 4;
+bool DeferredAOPass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& ao, std::vector<std::uint8_t>* covered,
+                            vtkRenderer* renderer) {
+  View* v = const_cast<View*>(FindView(renderer));
+  if (!v || !v->hasFrame) return false;
+  const DeferredFrame& f = v->frame;
+  const int w = f.screenWidth, h = f.screenHeight;
+  const bool rgba = f.config.aoChannels == 4;
   vtkOpenGLState* state = renWin->GetState();
   StateGuards guards(state);
   state->vtkglDisable(GL_BLEND);
@@ -214,17 +278,19 @@ bool DeferredAOPass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& a
   // Full resolution only while reading: the pipeline itself keeps no full-resolution AO buffer.
   auto target = makeTexture2D(renWin, rgba ? TexFormat::RGBA32F : TexFormat::R32F, w, h);
   std::vector<float> pixels(static_cast<std::size_t>(w) * h * (rgba ? 4 : 1));
-  ActiveTextures gbufferTextures{GBuffer->GetDepthTexture(), GBuffer->GetNormalTexture(), GBuffer->GetColorTexture(),
-                                 GBuffer->GetFlagsTexture()};
-  const bool ok = Combine(AOOutputStage, true, [&] {
-    AOOutputStage.renderInto(Framebuffer, {target});
+  GBufferPass* gbuffer = v->gbuffer;
+  ActiveTextures gbufferTextures{gbuffer->GetDepthTexture(), gbuffer->GetNormalTexture(), gbuffer->GetColorTexture(),
+                                 gbuffer->GetFlagsTexture()};
+  vtkOpenGLFramebufferObject* fbo = v->framebuffer;
+  const bool ok = Combine(*v, AOOutputStage, true, [&] {
+    AOOutputStage.renderInto(fbo, {target});
     state->PushReadFramebufferBinding();
-    Framebuffer->Bind(GL_READ_FRAMEBUFFER);
-    Framebuffer->AddColorAttachment(0, target);
+    fbo->Bind(GL_READ_FRAMEBUFFER);
+    fbo->AddColorAttachment(0, target);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, rgba ? GL_RGBA : GL_RED, GL_FLOAT, pixels.data());
-    Framebuffer->RemoveColorAttachment(0);
+    fbo->RemoveColorAttachment(0);
     state->PopReadFramebufferBinding();
   });
   target->ReleaseGraphicsResources(renWin);
@@ -245,14 +311,17 @@ bool DeferredAOPass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& a
 }
 
 std::size_t DeferredAOPass::MemoryBytes() const {
-  return GBuffer->MemoryBytes() + textureBytes(AOTarget) + textureBytes(ZTarget) + Upsampler.memoryBytes() +
-         FamilyMemoryBytes();
+  std::size_t bytes = FamilyMemoryBytes();
+  for (const auto& [renderer, view] : Views) bytes += view->memoryBytes();
+  return bytes;
 }
 
 void DeferredAOPass::ReleaseGraphicsResources(vtkWindow* w) {
   Superclass::ReleaseGraphicsResources(w);
-  GBuffer->ReleaseGraphicsResources(w);
-  Upsampler.release(w);
+  for (auto& [renderer, view] : Views) view->release(w);
+  Views.clear();
+  Current = nullptr;
+  if (Delegate) Delegate->ReleaseGraphicsResources(w);
   CombineStage.release(w);
   AOOutputStage.release(w);
   ReleaseFamily(w);
@@ -260,11 +329,7 @@ void DeferredAOPass::ReleaseGraphicsResources(vtkWindow* w) {
     renWin->MakeCurrent();
     Timer.release();
   }
-  AOTarget = ZTarget = nullptr;
-  Result = nullptr;
-  Framebuffer = nullptr;
   Frame = DeferredFrame{};
-  HasFrame = false;
 }
 
 }  // namespace aokit

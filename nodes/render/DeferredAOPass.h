@@ -26,6 +26,8 @@
 // shaders/DeferredCommon.glsl), bound with DeferredFrame::bindCommon().
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,7 +36,6 @@
 #include <vtkSmartPointer.h>
 
 #include "render/DeferredFrame.h"
-#include "render/DeferredUpsampler.h"
 #include "render/FullScreenStage.h"
 #include "render/GBufferPass.h"
 #include "render/StageTimer.h"
@@ -65,16 +66,18 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   void Render(const vtkRenderState* s) final;
   void ReleaseGraphicsResources(vtkWindow* w) final;
 
-  // The last frame's AO at full resolution (upsampled like the combine stage), one float per
-  // pixel in [0, 1], bottom row first; with ambient transfer, 1 - W averaged over colours; 0 where
-  // the prop receives no AO. Renders into a temporary target that is released afterwards. The
-  // context must be current. Returns false before the first frame. `covered` (optional): 1 where
-  // a surface was drawn.
-  bool ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& ao, std::vector<std::uint8_t>* covered = nullptr);
+  // The last frame's AO of `renderer` (default: the renderer drawn last) at full resolution of its
+  // viewport (upsampled like the combine stage), one float per pixel in [0, 1], bottom row first;
+  // with ambient transfer, 1 - W averaged over colours; 0 where the prop receives no AO. Renders
+  // into a temporary target that is released afterwards. The context must be current. Returns false
+  // before that renderer's first frame. `covered` (optional): 1 where a surface was drawn.
+  bool ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& ao, std::vector<std::uint8_t>* covered = nullptr,
+              vtkRenderer* renderer = nullptr);
 
-  // GPU bytes of everything it holds: G-buffer, AO targets, the family's own.
+  // GPU bytes of everything it holds: G-buffers and AO targets of every renderer, the family's own.
   std::size_t MemoryBytes() const;
-  GBufferPass* GetGBufferPass() const { return GBuffer; }
+  // The G-buffer of `renderer` (default: the renderer drawn last); null before its first frame.
+  GBufferPass* GetGBufferPass(vtkRenderer* renderer = nullptr) const;
 
   // GPU stage times of the last frame (timing off by default).
   void SetStageTiming(bool on) { Timer.setEnabled(on); }
@@ -90,8 +93,10 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   // family adds what it needs (channels, guard band, ids, baked AO) and lists its programs.
   virtual void Plan(const FrameContext& context, DeferredPlan& plan) = 0;
   // Renders this frame's AO into f.aoTarget and f.zTarget (blend and depth test are off) and any
-  // further stages; returns the texture holding the final AO at the target size (f.aoTarget or one
-  // of the family's), or nullptr when a stage failed.
+  // further stages; returns the texture holding the final AO at the target size (f.aoTarget, or
+  // f.resultTarget when the plan asked for one), or nullptr when a stage failed. A pass may serve
+  // several renderers: whatever a frame's AO lives in must be the frame's (the base keeps one set
+  // of G-buffer and targets per renderer).
   virtual vtkTextureObject* RenderAO(DeferredFrame& f) = 0;
   // Draws over the combined frame (the renderer's viewport, depth test off) when the plan asked.
   virtual void RenderOverlay(DeferredFrame&) {}
@@ -99,24 +104,24 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   virtual void ReleaseFamily(vtkWindow*) {}
 
  private:
+  struct View;  // one renderer's G-buffer, targets and last frame
+  View& ViewOf(vtkRenderer* renderer);
+  const View* FindView(vtkRenderer* renderer) const;
   const char* Ready(const DeferredPlan& plan);
-  void AllocateTargets();
-  std::string CombineDefines(bool outputAO) const;
+  void AllocateTargets(View& v, bool resultTarget);
+  std::string CombineDefines(const DeferredConfig& c, bool outputAO) const;
   // Binds the combine program (frame or AO-output variant) and its inputs, then calls draw().
   template <class Draw>
-  bool Combine(FullScreenStage& stage, bool outputAO, Draw&& draw);
+  bool Combine(View& v, FullScreenStage& stage, bool outputAO, Draw&& draw);
 
-  vtkNew<GBufferPass> GBuffer;
+  vtkSmartPointer<vtkRenderPass> Delegate;  // null: each G-buffer's vtkRenderStepsPass
   StageTimer Timer;
-  DeferredFrame Frame;
+  DeferredFrame Frame;  // the frame being drawn, or the last
   double SceneRadius = 0.0;
   Falloff SceneFalloff = Falloff::Binary;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  vtkSmartPointer<vtkTextureObject> AOTarget, ZTarget;
-  vtkTextureObject* Result = nullptr;  // the family's final AO
-  DeferredUpsampler Upsampler;
+  std::map<vtkRenderer*, std::unique_ptr<View>> Views;
+  View* Current = nullptr;  // the renderer drawn last
   FullScreenStage CombineStage, AOOutputStage;
-  bool HasFrame = false;
   std::string ReportedFailure;  // the failure last reported (report once, not every frame)
 
   DeferredAOPass(const DeferredAOPass&) = delete;

@@ -26,6 +26,7 @@ struct DeferredFrame {
   int screenWidth = 0, screenHeight = 0, targetWidth = 0, targetHeight = 0;
   vtkTextureObject* aoTarget = nullptr;  // aoChannels floats per texel at the target size
   vtkTextureObject* zTarget = nullptr;   // R32F: view z of the texel's pixel, +1 on background
+  vtkTextureObject* resultTarget = nullptr;  // as aoTarget, when the plan asked (a last stage's output)
   StageTimer* timer = nullptr;
   float clip[3][4] = {};                 // rows 0, 1, 3 of the G-buffer's view -> clip matrix
   float depthToZ[4] = {};                // window depth -> view z (DeferredCommon.glsl)

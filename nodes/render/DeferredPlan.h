@@ -38,7 +38,8 @@ struct DeferredPlan {
   std::vector<std::pair<FullScreenStage*, std::string>> stages;
   // Other programs (compute): a name for the report, and a builder that returns false on failure.
   std::vector<std::pair<std::string, std::function<bool()>>> programs;
-  bool overlay = false;  // RenderOverlay() draws after the combine (the family's debug views)
+  bool overlay = false;       // RenderOverlay() draws after the combine (the family's debug views)
+  bool resultTarget = false;  // a second AO target, DeferredFrame::resultTarget, for a last stage
 
   void stage(FullScreenStage& s, std::string defines) { stages.emplace_back(&s, std::move(defines)); }
   void program(std::string name, std::function<bool()> build) { programs.emplace_back(std::move(name), std::move(build)); }

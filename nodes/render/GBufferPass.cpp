@@ -172,10 +172,11 @@ void GBufferPass::Render(const vtkRenderState* s) {
   for (int row = 0; row < 2; ++row)
     for (int col = 0; col < 4; ++col) Projection->SetElement(row, col, Projection->GetElement(row, col) * scale[row]);
 
-  // With a guard band, the render state names the FBO: vtkCameraPass then sets the viewport and
-  // scissor to the FBO's size at (0, 0) rather than the renderer's tiled size and origin, and the
-  // prop list is every visible prop (the renderer culled against the smaller frustum).
-  vtkRenderState guardState(r);
+  // The render state names the FBO: vtkCameraPass then sets the viewport and scissor to the FBO's
+  // size at (0, 0) rather than the renderer's tiled size and origin (a renderer in the right half
+  // of a window would draw outside its own G-buffer). With a guard band the prop list is every
+  // visible prop (the renderer culled against the smaller frustum).
+  vtkRenderState fboState(r);
   std::vector<vtkProp*> props;
   if (guarded) {
     vtkPropCollection* all = r->GetViewProps();
@@ -183,16 +184,18 @@ void GBufferPass::Render(const vtkRenderState* s) {
     all->InitTraversal(it);
     while (vtkProp* p = all->GetNextProp(it))
       if (p->GetVisibility()) props.push_back(p);
-    guardState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
-    guardState.SetFrameBuffer(Framebuffer);
-    guardState.SetRequiredKeys(s->GetRequiredKeys());
+    fboState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  } else {
+    fboState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
   }
+  fboState.SetFrameBuffer(Framebuffer);
+  fboState.SetRequiredKeys(s->GetRequiredKeys());
   std::unique_ptr<ScopedGuardProjection> projection;
   if (guarded) projection = std::make_unique<ScopedGuardProjection>(camera, Projection);
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkOpenGLState::ScopedglScissor scissorSaver(state);
 
-  const vtkRenderState* rs = guarded ? &guardState : s;
+  const vtkRenderState* rs = &fboState;
   PreRender(rs);
   Framebuffer->SaveCurrentBindingsAndBuffers();
   Framebuffer->Bind();

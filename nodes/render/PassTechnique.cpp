@@ -49,7 +49,7 @@ std::size_t PassTechnique::memoryBytes() const {
 bool PassTechnique::readAO(vtkRenderer* renderer, std::vector<float>& ao) {
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   DeferredAOPass* d = deferredPass();
-  return d && renWin && d->ReadAO(renWin, ao);
+  return d && renWin && d->ReadAO(renWin, ao, nullptr, renderer);
 }
 
 void PassTechnique::setStageTiming(bool on) {

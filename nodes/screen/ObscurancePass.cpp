@@ -43,6 +43,7 @@ void ObscurancePass::Plan(const FrameContext& context, DeferredPlan& plan) {
   plan.stage(*ObscuranceStage,
              Constants.defines() + "#define OBS_NONCASTERS " + (context.hasNonCasters ? "1" : "0") + "\n");
   plan.stage(Filter->stage(), Constants.defines());
+  plan.resultTarget = true;  // the filter's output
 }
 
 vtkTextureObject* ObscurancePass::RenderAO(DeferredFrame& f) {
@@ -56,19 +57,14 @@ vtkTextureObject* ObscurancePass::RenderAO(DeferredFrame& f) {
   ObscuranceStage->renderInto(f.fbo, {f.aoTarget, f.zTarget});
   f.mark("obscurance");
 
-  ensureTexture2D(FilteredTarget, f.renWin, Constants.transfer ? TexFormat::RGBA32F : TexFormat::R32F, f.targetWidth,
-                  f.targetHeight);
-  if (!Filter->run(f.renWin, f.fbo, f.aoTarget, f.zTarget, FilteredTarget, Constants)) return nullptr;
+  if (!Filter->run(f.renWin, f.fbo, f.aoTarget, f.zTarget, f.resultTarget, Constants)) return nullptr;
   f.mark("filter");
-  return FilteredTarget;
+  return f.resultTarget;
 }
-
-std::size_t ObscurancePass::FamilyMemoryBytes() const { return textureBytes(FilteredTarget); }
 
 void ObscurancePass::ReleaseFamily(vtkWindow* w) {
   ObscuranceStage->release(w);
   Filter->release(w);
-  FilteredTarget = nullptr;
 }
 
 }  // namespace aokit

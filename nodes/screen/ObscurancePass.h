@@ -55,7 +55,6 @@ class ObscurancePass : public DeferredAOPass {
   const DeferredSettings& CommonSettings() const override { return Settings.common; }
   void Plan(const FrameContext& context, DeferredPlan& plan) override;
   vtkTextureObject* RenderAO(DeferredFrame& f) override;
-  std::size_t FamilyMemoryBytes() const override;
   void ReleaseFamily(vtkWindow* w) override;
 
  private:
@@ -64,7 +63,6 @@ class ObscurancePass : public DeferredAOPass {
   bool ConstantsValid = false;
   FrameContext ConstantsContext;  // the context Constants were built for
 
-  vtkSmartPointer<vtkTextureObject> FilteredTarget;  // the filter's output, at the AO target's size
   std::unique_ptr<FullScreenStage> ObscuranceStage;
   std::unique_ptr<ObscuranceFilter> Filter;
 
