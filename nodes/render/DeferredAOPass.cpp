@@ -2,11 +2,14 @@
 
 #include <stdexcept>
 
+#include <vtkCameraPass.h>
+#include <vtkObjectFactory.h>
 #include <vtkOpenGLError.h>
 #include <vtkOpenGLFramebufferObject.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLState.h>
 #include <vtkRenderState.h>
+#include <vtkRenderStepsPass.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkTextureObject.h>
@@ -14,6 +17,7 @@
 #include <vtk_glew.h>
 
 #include "DeferredCombineFS.h"
+#include "render/AfterOpaque.h"
 #include "render/DeferredUpsampler.h"
 #include "render/Textures.h"
 
@@ -48,6 +52,20 @@ struct DeferredAOPass::View {
 
 namespace {
 
+// Hardware selection (vtkPropPicker, vtkHardwareSelector, area picking) renders prop ids through
+// the renderer's own geometry update, which a custom pass replaces: draw what VTK's pipeline draws
+// then, so the selector sees every prop as it would without the pass.
+class SelectionGeometry : public vtkRenderPass {
+ public:
+  static SelectionGeometry* New();
+  vtkTypeMacro(SelectionGeometry, vtkRenderPass);
+  void Render(const vtkRenderState* s) override {
+    UpdateGeometry(s->GetRenderer(), s->GetFrameBuffer());
+    NumberOfRenderedProps = s->GetPropArrayCount();
+  }
+};
+vtkStandardNewMacro(SelectionGeometry);
+
 // Saves what the stages change and restores it when the pass returns.
 struct StateGuards {
   vtkOpenGLState::ScopedglEnableDisable blend, depthTest, scissorTest;
@@ -71,13 +89,15 @@ void check(const DeferredConfig& c) {
 
 }  // namespace
 
-DeferredAOPass::DeferredAOPass() : CombineStage("combine", DeferredCombineFS), AOOutputStage("AO output", DeferredCombineFS) {}
+DeferredAOPass::DeferredAOPass()
+    : After(std::make_unique<AfterOpaque>()), CombineStage("combine", DeferredCombineFS),
+      AOOutputStage("AO output", DeferredCombineFS) {}
 
 DeferredAOPass::~DeferredAOPass() = default;
 
 void DeferredAOPass::SetDelegatePass(vtkRenderPass* delegate) {
   Delegate = delegate;
-  for (auto& [renderer, view] : Views) view->gbuffer->SetDelegatePass(delegate);
+  for (auto& [renderer, view] : Views) view->gbuffer->SetDelegatePass(GBufferDelegate());
   Modified();
 }
 
@@ -103,7 +123,7 @@ DeferredAOPass::View& DeferredAOPass::ViewOf(vtkRenderer* renderer) {
     v = std::make_unique<View>();
     v->renderer = renderer;
     v->gbuffer->SetLean(true);  // positions come from the depth buffer
-    if (Delegate) v->gbuffer->SetDelegatePass(Delegate);
+    v->gbuffer->SetDelegatePass(GBufferDelegate());
   }
   return *v;
 }
@@ -169,6 +189,16 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   vtkRenderer* r = s->GetRenderer();
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(r->GetRenderWindow());
   vtkOpenGLState* state = renWin->GetState();
+  if (r->GetSelector()) {  // picking: no AO, VTK's own selection rendering
+    if (!Selection) {
+      auto camera = vtkSmartPointer<vtkCameraPass>::New();
+      camera->SetDelegatePass(vtkSmartPointer<SelectionGeometry>::New());
+      Selection = camera;
+    }
+    Selection->Render(s);
+    NumberOfRenderedProps = Selection->GetNumberOfRenderedProps();
+    return;
+  }
   StateGuards guards(state);
   View& v = ViewOf(r);
   Current = &v;
@@ -205,7 +235,7 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   gbuffer->Render(s);
   NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
   Frame.mark("gbuffer");
-  if (failed) return;
+  if (failed) return RenderAfterOpaque(s);
 
   // 3. The family's AO stages, 4. upsampling.
   Frame.setView(r, gbuffer);
@@ -230,7 +260,7 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   state->vtkglDepthMask(GL_TRUE);
   if (!upsampled) {  // a stage failed after the G-buffer: show the frame without AO
     gbuffer->CopyToFramebuffer(renWin);
-    return;
+    return RenderAfterOpaque(s);
   }
   v.frame = Frame;
   v.hasFrame = Combine(v, CombineStage, false, [&] { CombineStage.render(); });
@@ -239,7 +269,29 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
     state->vtkglDisable(GL_DEPTH_TEST);
     RenderOverlay(Frame);
   }
+  RenderAfterOpaque(s);
   vtkOpenGLCheckErrorMacro("failed after DeferredAOPass::Render");
+}
+
+// What the G-buffer draws: opaque geometry through VTK's render steps (a user's, when they are
+// render steps), or all a user's other delegate draws.
+vtkSmartPointer<vtkRenderPass> DeferredAOPass::GBufferDelegate() const {
+  auto* steps = vtkRenderStepsPass::SafeDownCast(Delegate);
+  if (Delegate && !steps) return Delegate;
+  return opaqueSteps(steps);
+}
+
+// 7. Translucent geometry, volumes and overlays over the frame (AfterOpaque.h), unless a delegate
+// of the user's that is no vtkRenderStepsPass drew them into the G-buffer.
+void DeferredAOPass::RenderAfterOpaque(const vtkRenderState* s) {
+  auto* steps = vtkRenderStepsPass::SafeDownCast(Delegate);
+  if (Delegate && !steps) return;
+  int x, y, w, h;
+  s->GetRenderer()->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow())->GetState();
+  state->vtkglViewport(x, y, w, h);
+  state->vtkglScissor(x, y, w, h);
+  After->render(s, steps);
 }
 
 template <class Draw>
@@ -322,6 +374,8 @@ void DeferredAOPass::ReleaseGraphicsResources(vtkWindow* w) {
   Views.clear();
   Current = nullptr;
   if (Delegate) Delegate->ReleaseGraphicsResources(w);
+  if (Selection) Selection->ReleaseGraphicsResources(w);
+  After->release(w);
   CombineStage.release(w);
   AOOutputStage.release(w);
   ReleaseFamily(w);

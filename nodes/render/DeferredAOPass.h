@@ -17,6 +17,11 @@
 //      (ReadAO), or a debug view (AO, normals, depth). With baked AO on, each pixel's per-vertex
 //      baked AO (G-buffer) is combined first: AO = 1 - (1 - baked)(1 - AO).
 //   6. the family's overlay, when its plan asks for one (its own debug views).
+//   7. what VTK draws after opaque geometry (render/AfterOpaque.h): translucent geometry (depth
+//      peeling when the renderer asks), FXAA, volumes, overlays, over the combined frame and its
+//      depth. The G-buffer draws lights and opaque geometry only, unless SetDelegatePass gave it
+//      a delegate of the user's, which then draws everything it draws into the G-buffer.
+// During hardware selection (pickers, vtkHardwareSelector) it draws what VTK draws without a pass.
 // Each stage is timed with GPU timestamps when timing is on (GetStageTimes()): "gbuffer", the
 // family's stages, "upsample" (separable mode), "combine". GL state is restored by scoped guards;
 // a program that fails to compile is reported once and the frame is shown without AO.
@@ -46,11 +51,16 @@ class vtkTextureObject;
 
 namespace aokit {
 
+class AfterOpaque;
+
 class DeferredAOPass : public vtkOpenGLRenderPass {
  public:
   vtkTypeMacro(DeferredAOPass, vtkOpenGLRenderPass);
 
-  // The pass that draws the scene into the G-buffer (vtkRenderStepsPass by default).
+  // The pass that draws the scene into the G-buffer (by default VTK's render steps with lights and
+  // opaque geometry; the rest is drawn after the combine). A vtkRenderStepsPass of the user's is
+  // split the same way (its lights and opaque passes into the G-buffer, its translucent, volumetric
+  // and overlay passes after); any other delegate draws all it draws into the G-buffer.
   void SetDelegatePass(vtkRenderPass* delegate);
   vtkRenderPass* GetDelegatePass() const;
 
@@ -109,6 +119,8 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   const View* FindView(vtkRenderer* renderer) const;
   const char* Ready(const DeferredPlan& plan);
   void AllocateTargets(View& v, bool resultTarget);
+  void RenderAfterOpaque(const vtkRenderState* s);
+  vtkSmartPointer<vtkRenderPass> GBufferDelegate() const;
   std::string CombineDefines(const DeferredConfig& c, bool outputAO) const;
   // Binds the combine program (frame or AO-output variant) and its inputs, then calls draw().
   template <class Draw>
@@ -121,6 +133,8 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   Falloff SceneFalloff = Falloff::Binary;
   std::map<vtkRenderer*, std::unique_ptr<View>> Views;
   View* Current = nullptr;  // the renderer drawn last
+  std::unique_ptr<AfterOpaque> After;
+  vtkSmartPointer<vtkRenderPass> Selection;  // hardware selection (pickers): VTK's own rendering
   FullScreenStage CombineStage, AOOutputStage;
   std::string ReportedFailure;  // the failure last reported (report once, not every frame)
 
