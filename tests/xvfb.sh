@@ -22,7 +22,16 @@ case "$cmd" in
     exit 1
     ;;
   stop)
-    [ -f "$file.pid" ] && kill "$(cat "$file.pid")" 2> /dev/null || true
+    # Wait for the server to be gone: one still exiting removes its socket file, which a new server
+    # on the same display number (the next test run) may already have made.
+    if [ -f "$file.pid" ]; then
+      pid=$(cat "$file.pid")
+      kill "$pid" 2> /dev/null || true
+      for _ in $(seq 1 100); do
+        kill -0 "$pid" 2> /dev/null || break
+        sleep 0.1
+      done
+    fi
     rm -f "$file" "$file.number" "$file.pid"
     ;;
   *) echo "usage: $0 start|stop FILE" >&2; exit 2 ;;
