@@ -9,7 +9,8 @@ case "$cmd" in
   start)
     command -v Xvfb > /dev/null || { echo "Xvfb not found (scripts/setup.sh installs xvfb)" >&2; exit 1; }
     rm -f "$file" "$file.number" "$file.pid"
-    setsid Xvfb -displayfd 3 -screen 0 1600x1200x24 -nolisten tcp 3> "$file.number" > "$file.log" 2>&1 < /dev/null &
+    # -noreset: a server resets when its last client leaves and refuses connections meanwhile
+    setsid Xvfb -displayfd 3 -screen 0 1600x1200x24 -nolisten tcp -noreset 3> "$file.number" > "$file.log" 2>&1 < /dev/null &
     echo $! > "$file.pid"
     for _ in $(seq 1 100); do
       if [ -s "$file.number" ]; then
