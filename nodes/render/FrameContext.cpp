@@ -2,7 +2,11 @@
 
 #include <cmath>
 
+#include <vtkActor.h>
+#include <vtkMapper.h>
+#include <vtkPolyData.h>
 #include <vtkPropCollection.h>
+#include <vtkProperty.h>
 #include <vtkRenderer.h>
 
 #include "render/ActorKeys.h"
@@ -10,6 +14,18 @@
 #include "render/DeferredSettings.h"
 
 namespace aokit {
+
+namespace {
+// Lines, vertices, or a points or wireframe representation: geometry that is drawn but is no
+// surface, which the G-buffer marks as such (GBufferOutputFS.glsl) and screen-space tests skip.
+bool drawsNonSurfaces(vtkProp* p) {
+  auto* actor = vtkActor::SafeDownCast(p);
+  if (!actor || !actor->GetMapper()) return false;
+  if (actor->GetProperty() && actor->GetProperty()->GetRepresentation() != VTK_SURFACE) return true;
+  auto* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+  return poly && (poly->GetNumberOfLines() > 0 || poly->GetNumberOfVerts() > 0);
+}
+}  // namespace
 
 double resolvedRadius(const DeferredSettings& s, double sceneRadius) { return s.radius > 0.0 ? s.radius : sceneRadius; }
 
@@ -38,7 +54,7 @@ FrameContext resolveFrameContext(const DeferredSettings& s, double sceneRadius, 
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
   while (vtkProp* p = props->GetNextProp(it))
-    if (p->GetVisibility() && !propCastsAO(p)) c.hasNonCasters = true;
+    if (p->GetVisibility() && (!propCastsAO(p) || drawsNonSurfaces(p))) c.hasNonCasters = true;
   return c;
 }
 

@@ -13,7 +13,8 @@ struct DeferredSettings;
 struct FrameContext {
   double radius = 1.0;                //!< R, world units, > 0
   Falloff falloff = Falloff::Binary;  //!< k(d) over R
-  bool hasNonCasters = false;         //!< some visible prop is drawn but casts no AO (ActorKeys.h)
+  bool hasNonCasters = false;         //!< some visible prop is drawn but casts no AO (ActorKeys.h), or
+                                      //!<   draws lines or points, which are no surface
 };
 
 // The settings' radius when set (> 0), else sceneRadius (which may itself be 0 = unknown).

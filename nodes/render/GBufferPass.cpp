@@ -33,7 +33,12 @@ namespace aokit {
 
 vtkStandardNewMacro(GBufferPass);
 
-GBufferPass::GBufferPass() { Delegate = vtkSmartPointer<vtkRenderStepsPass>::New(); }
+GBufferPass::GBufferPass() {
+  Delegate = vtkSmartPointer<vtkRenderStepsPass>::New();
+  // Mappers keep the shaders they built unless a pass's stage time is newer: a new G-buffer (a
+  // reference capture's full layout beside a technique's lean one) must have them rebuilt.
+  LayoutTime.Modified();
+}
 
 GBufferPass::~GBufferPass() { delete CopyQuad; }
 
@@ -315,6 +320,10 @@ bool GBufferPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapp
                                       vtkOpenGLVertexArrayObject*) {
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
   ActivateDrawBuffers(polyData ? Attachments() : 1);
+  // The targets beside the colour take what the shader writes, not a blend with what lies below:
+  // lines and points write "no surface" (zeros) there (VTK keeps blending on for opaque geometry,
+  // and enables it for all buffers at once, so this is said again before every draw).
+  for (int i = 1; polyData && i < Attachments(); ++i) glDisablei(GL_BLEND, static_cast<GLuint>(i));
   if (polyData && program->IsUniformUsed("aokitFlags")) {
     const int flags = 1 + (propReceivesAO(prop) ? 2 : 0) + (propCastsAO(prop) ? 4 : 0) + (propDynamic(prop) ? 8 : 0);
     program->SetUniformf("aokitFlags", flags / 255.0f);
