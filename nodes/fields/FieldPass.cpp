@@ -46,7 +46,7 @@ FieldPass::FieldPass()
   OccluderData = packOccluders({}, {}, Settings.eval.bias);
 }
 
-FieldPass::~FieldPass() = default;
+FieldPass::~FieldPass() { ReleaseOnDestroy(); }
 
 void FieldPass::PrintSelf(ostream& os, vtkIndent indent) {
   Superclass::PrintSelf(os, indent);

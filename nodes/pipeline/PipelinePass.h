@@ -17,7 +17,7 @@ class PipelinePass : public DeferredAOPass {
 
  protected:
   PipelinePass();
-  ~PipelinePass() override = default;
+  ~PipelinePass() override { ReleaseOnDestroy(); }
 
   const DeferredSettings& CommonSettings() const override { return Settings.common; }
   void Plan(const FrameContext& context, DeferredPlan& plan) override;

@@ -95,6 +95,10 @@ DeferredAOPass::DeferredAOPass()
 
 DeferredAOPass::~DeferredAOPass() = default;
 
+void DeferredAOPass::ReleaseOnDestroy() {
+  if (LastWindow) ReleaseGraphicsResources(LastWindow);
+}
+
 void DeferredAOPass::SetDelegatePass(vtkRenderPass* delegate) {
   Delegate = delegate;
   for (auto& [renderer, view] : Views) view->gbuffer->SetDelegatePass(GBufferDelegate());
@@ -202,6 +206,7 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   StateGuards guards(state);
   View& v = ViewOf(r);
   Current = &v;
+  LastWindow = renWin;
   v.hasFrame = false;
 
   // 1. The plan, and every program built before drawing: if one fails, the G-buffer shows the

@@ -39,6 +39,7 @@
 #include <vtkNew.h>
 #include <vtkOpenGLRenderPass.h>
 #include <vtkSmartPointer.h>
+#include <vtkWeakPointer.h>
 
 #include "render/DeferredFrame.h"
 #include "render/FullScreenStage.h"
@@ -112,6 +113,10 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   virtual void RenderOverlay(DeferredFrame&) {}
   virtual std::size_t FamilyMemoryBytes() const { return 0; }
   virtual void ReleaseFamily(vtkWindow*) {}
+  // For a family's destructor: releases everything in the window the pass last drew in, if that
+  // window is still alive (a pass dropped without ReleaseGraphicsResources must not leave GL
+  // objects in it; the base's own destructor cannot reach the family's resources).
+  void ReleaseOnDestroy();
 
  private:
   struct View;  // one renderer's G-buffer, targets and last frame
@@ -127,6 +132,7 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   bool Combine(View& v, FullScreenStage& stage, bool outputAO, Draw&& draw);
 
   vtkSmartPointer<vtkRenderPass> Delegate;  // null: each G-buffer's vtkRenderStepsPass
+  vtkWeakPointer<vtkOpenGLRenderWindow> LastWindow;  // the window of the last frame
   StageTimer Timer;
   DeferredFrame Frame;  // the frame being drawn, or the last
   double SceneRadius = 0.0;

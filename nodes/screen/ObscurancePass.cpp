@@ -18,7 +18,7 @@ ObscurancePass::ObscurancePass()
     : ObscuranceStage(std::make_unique<FullScreenStage>("obscurance", ObscurancePassObscuranceFS)),
       Filter(std::make_unique<ObscuranceFilter>()) {}
 
-ObscurancePass::~ObscurancePass() = default;
+ObscurancePass::~ObscurancePass() { ReleaseOnDestroy(); }
 
 void ObscurancePass::PrintSelf(ostream& os, vtkIndent indent) {
   Superclass::PrintSelf(os, indent);

@@ -26,7 +26,7 @@ HybridPass::HybridPass()
     : MarchStage(std::make_unique<FullScreenStage>("march", HybridMarchFS)),
       VoxelViewStage(std::make_unique<FullScreenStage>("voxel view", HybridVoxelViewFS)) {}
 
-HybridPass::~HybridPass() = default;
+HybridPass::~HybridPass() { ReleaseOnDestroy(); }
 
 void HybridPass::PrintSelf(ostream& os, vtkIndent indent) {
   Superclass::PrintSelf(os, indent);

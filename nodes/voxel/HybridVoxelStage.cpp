@@ -46,13 +46,13 @@ std::vector<CasterDraw> HybridVoxelStage::draws(const FrameCasters& casters, con
   std::vector<CasterDraw> out;
   for (std::size_t i : which)
     if (const CasterMesh* mesh = buffers_.get(casters.polys[i]))
-      out.push_back({mesh, CasterBuffers::propMatrix(casters.props[i])});
+      out.push_back({mesh, casters.matrices[i]});
   return out;
 }
 
 void HybridVoxelStage::voxelize(vtkRenderer* renderer, vtkOpenGLRenderWindow* renWin, const HybridSettings& s,
                                 const FrameContext& context) {
-  const FrameCasters casters = gatherCasters(renderer);
+  const FrameCasters casters = gatherCasters(renderer, meshes_);
   voxelized_ = voxelizedStatic_ = 0;
   hasGrid_ = false;
   constants_.rays = s.rays;  // the march still runs (AO 0): its pass count needs these

@@ -64,6 +64,7 @@ class HybridVoxelStage {
   void voxelizeStaticDynamic(vtkRenderer* renderer, vtkOpenGLRenderWindow* renWin, const HybridSettings& s,
                              const FrameContext& context, const FrameCasters& casters);
 
+  PropMeshes meshes_{"hybrid"};
   RegionCache regions_;
   PlanCache plans_;
   CasterBuffers buffers_;

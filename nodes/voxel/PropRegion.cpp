@@ -65,14 +65,13 @@ bool FrameView::operator==(const FrameView& o) const {
          parallelScale == o.parallelScale && aspect == o.aspect && sameBounds(scene, o.scene);
 }
 
-FrameCasters gatherCasters(vtkRenderer* renderer) {
+FrameCasters gatherCasters(vtkRenderer* renderer, PropMeshes& meshes) {
   FrameCasters out;
-  for (vtkProp* prop : casterProps(renderer)) {
-    vtkPolyData* poly = CasterBuffers::propPolyData(prop);
-    if (!poly || poly->GetNumberOfPoints() == 0) continue;
-    out.props.push_back(prop);
-    out.polys.push_back(poly);
-    out.bounds.push_back(fromVtk(prop->GetBounds()));
+  for (const PropMesh& m : meshes.collect(renderer)) {
+    out.props.push_back(m.prop);
+    out.polys.push_back(m.poly);
+    out.matrices.push_back(m.modelToWorld);
+    out.bounds.push_back(m.wholeProp ? fromVtk(m.prop->GetBounds()) : fromVtk(m.poly->GetBounds()).transformed(m.modelToWorld));
   }
   return out;
 }

@@ -14,6 +14,7 @@
 #include "core/Camera.h"
 #include "voxel/HybridSettings.h"
 #include "voxel/StaticDynamic.h"
+#include "render/PropMeshes.h"
 #include "voxel/VoxelRegion.h"
 
 class vtkPolyData;
@@ -23,12 +24,15 @@ class vtkRenderer;
 namespace aokit {
 
 struct FrameCasters {
-  std::vector<vtkProp*> props;      // visible casters that show polydata
-  std::vector<vtkPolyData*> polys;  // theirs (pipelines brought up to date)
-  std::vector<Bounds> bounds;       // their world bounds
+  std::vector<vtkProp*> props;        // the prop of each caster mesh (render/PropMeshes.h)
+  std::vector<vtkPolyData*> polys;    // the meshes (pipelines brought up to date)
+  std::vector<glm::dmat4> matrices;   // model to world
+  std::vector<Bounds> bounds;         // their world bounds
 };
 
-FrameCasters gatherCasters(vtkRenderer* renderer);
+// Every mesh the renderer's casting props draw (composite blocks, glyph instances, assembly parts
+// included: render/PropMeshes.h, which warns once about props it cannot read).
+FrameCasters gatherCasters(vtkRenderer* renderer, PropMeshes& meshes);
 
 // The renderer's view as the region needs it.
 struct FrameView {

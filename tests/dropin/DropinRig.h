@@ -14,7 +14,9 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
 #include <vtkOpenGLRenderWindow.h>
+#include <vtkOutputWindow.h>
 #include <vtkPlaneSource.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -43,6 +45,27 @@ inline bool useTestDisplay() {
 
 #define AOKIT_REQUIRE_DISPLAY() \
   ASSERT_TRUE(aokit::dropin::useTestDisplay()) << "no X server: run under CTest (tests/xvfb.sh) or set DISPLAY"
+
+// Every message VTK would print (errors and warnings), kept instead while a Capture lives.
+class Messages : public vtkOutputWindow {
+ public:
+  static Messages* New() { VTK_STANDARD_NEW_BODY(Messages); }
+  vtkTypeMacro(Messages, vtkOutputWindow);
+  void DisplayText(const char* text) override { text_ += text; }
+  std::string text_;
+};
+struct Capture {
+  vtkNew<Messages> messages;
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  Capture() { vtkOutputWindow::SetInstance(messages); }
+  ~Capture() { vtkOutputWindow::SetInstance(previous); }
+  std::size_t count(const std::string& what) const {
+    std::size_t n = 0;
+    for (std::size_t at = text().find(what); at != std::string::npos; at = text().find(what, at + 1)) ++n;
+    return n;
+  }
+  const std::string& text() const { return messages->text_; }
+};
 
 enum class Family { Obscurance, Hybrid };
 inline const char* familyName(Family f) { return f == Family::Obscurance ? "obscurance" : "hybrid"; }

@@ -6,7 +6,6 @@
 #include <vtkColorTransferFunction.h>
 #include <vtkDualDepthPeelingPass.h>
 #include <vtkImageData.h>
-#include <vtkOutputWindow.h>
 #include <vtkPiecewiseFunction.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkSmartVolumeMapper.h>
@@ -19,23 +18,6 @@ using namespace aokit;
 using namespace aokit::dropin;
 
 namespace {
-
-// Every message VTK would print (errors and warnings), kept instead.
-class Messages : public vtkOutputWindow {
- public:
-  static Messages* New();
-  vtkTypeMacro(Messages, vtkOutputWindow);
-  void DisplayText(const char* text) override { text_ += text; }
-  std::string text_;
-};
-vtkStandardNewMacro(Messages);
-
-struct Capture {
-  vtkNew<Messages> messages;
-  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
-  Capture() { vtkOutputWindow::SetInstance(messages); }
-  ~Capture() { vtkOutputWindow::SetInstance(previous); }
-};
 
 // A vertical pane of glass between the camera and the floor points, opacity 0.4.
 vtkSmartPointer<vtkActor> glass() {
