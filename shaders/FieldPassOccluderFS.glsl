@@ -25,6 +25,7 @@ uniform int fieldInfo[4];                // the field's kind, N, bases (FieldGpu
 uniform vec4 fieldF0, fieldF1, fieldF2;  // the field's floats
 uniform vec4 fieldSphere;                // influence sphere: world centre, radius
 uniform int fieldOwner;                  // the occluder's instance id (0: none)
+uniform vec3 fieldOwnMin, fieldOwnMax;   // its own pixels are those of fieldOwner in this box (world)
 uniform sampler2D fieldIds;              // G-buffer instance ids
 uniform ivec2 fieldTarget;               // AO target size
 in vec2 texCoord;
@@ -39,8 +40,10 @@ void main()
   ivec2 g = aoCellTexel(cell, FIELD_DOWNSAMPLE);
   vec4 packedN = aoPackedNormal(g);
   int id = int(texelFetch(fieldIds, g, 0).r + 0.5);
-  if (packedN.w < 0.5 || (aoFlags(g) & AO_FLAG_RECEIVES) == 0 || (fieldOwner != 0 && id == fieldOwner)) discard;
+  if (packedN.w < 0.5 || (aoFlags(g) & AO_FLAG_RECEIVES) == 0) discard;
   vec3 p = (aoViewToWorld * vec4(aoViewPosition(g), 1.0)).xyz;
+  if (fieldOwner != 0 && id == fieldOwner && all(greaterThanEqual(p, fieldOwnMin)) && all(lessThanEqual(p, fieldOwnMax)))
+    discard;
   vec3 toCentre = p - fieldSphere.xyz;
   if (dot(toCentre, toCentre) > fieldSphere.w * fieldSphere.w) discard;
   vec3 n = normalize(mat3(aoViewToWorld) * aoUnpackNormal(packedN));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace aokit {
@@ -117,7 +118,13 @@ OccluderGpuData packOccluders(const std::vector<std::shared_ptr<const BakedField
     const InfluenceSphere s = influenceSphere(f, o.occluderToWorld, gridBias);
     d.floats.insert(d.floats.end(), {static_cast<float>(s.centre.x), static_cast<float>(s.centre.y),
                                      static_cast<float>(s.centre.z), static_cast<float>(s.radius)});
-    d.ints.insert(d.ints.end(), {o.instanceId, static_cast<std::uint32_t>(o.field), 0u, 0u});
+    d.ints.insert(d.ints.end(), {o.instanceId, static_cast<std::uint32_t>(o.field), o.ownBox.valid() ? 1u : 0u, 0u});
+    const float big = std::numeric_limits<float>::max();
+    if (o.ownBox.valid())
+      for (const glm::dvec3& c : {o.ownBox.min, o.ownBox.max})
+        d.ownBoxes.insert(d.ownBoxes.end(), {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)});
+    else
+      d.ownBoxes.insert(d.ownBoxes.end(), {-big, -big, -big, big, big, big});
   }
   d.cubeWords = (d.cubeCount + 31) / 32;
   d.words = std::max(1, d.cubeWords + (d.occluderCount - d.cubeCount + 31) / 32);
@@ -133,6 +140,8 @@ OccluderRecord occluderRecord(const OccluderGpuData& d, int slot) {
   r.sphere = r.worldToField + 12;
   r.instanceId = d.ints[k * kOccluderIntsPerOccluder];
   r.field = d.ints[k * kOccluderIntsPerOccluder + 1];
+  r.sharedId = d.ints[k * kOccluderIntsPerOccluder + 2] != 0;
+  r.ownBox = d.ownBoxes.empty() ? nullptr : &d.ownBoxes[k * 6];
   return r;
 }
 

@@ -58,12 +58,15 @@ struct OccluderGpuData {
   std::vector<int> order;         // packed slot -> index in the given occluder list
   std::vector<float> floats;
   std::vector<std::uint32_t> ints;
+  std::vector<float> ownBoxes;    // per slot: min xyz, max xyz of FieldOccluder::ownBox (all space when invalid)
 };
 
 // Occluder slot k as the draws read it back from the packed arrays.
 struct OccluderRecord {
   const float* worldToField = nullptr;  // rows 0..2 of M, 12 floats (the first 3 RGBA texels)
   const float* sphere = nullptr;        // the influence sphere: centre xyz, radius w, world space
+  const float* ownBox = nullptr;        // min xyz, max xyz: where its instance's pixels are its own
+  bool sharedId = false;                // ownBox bounds them (FieldOccluder::ownBox valid)
   std::uint32_t instanceId = 0, field = 0;
 };
 OccluderRecord occluderRecord(const OccluderGpuData& d, int slot);

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <sstream>
 #include <stdexcept>
+
+#include <vtkCommand.h>
 
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLFramebufferObject.h>
@@ -58,6 +61,10 @@ void FieldPass::PrintSelf(ostream& os, vtkIndent indent) {
 void FieldPass::SetSettings(const FieldSettings& s) {
   validate(s);
   const bool biasChanged = s.eval.bias != Settings.eval.bias;
+  std::ostringstream before, after;
+  fieldSchema().print(before, Settings, vtkIndent());
+  fieldSchema().print(after, s, vtkIndent());
+  if (Found && before.str() != after.str()) Found->clear();  // bakes may differ: obtained again (the cache keeps them)
   Settings = s;
   if (biasChanged) {
     OccluderData = packOccluders(Fields, Occluders, Settings.eval.bias);  // grid spheres grow with the bias
@@ -67,6 +74,53 @@ void FieldPass::SetSettings(const FieldSettings& s) {
 }
 
 void FieldPass::SetFields(std::vector<std::shared_ptr<const BakedField>> fields) {
+  FindOccluders = false;
+  UseFields(std::move(fields));
+}
+
+void FieldPass::SetOccluders(std::vector<FieldOccluder> occluders) {
+  FindOccluders = false;
+  UseOccluders(std::move(occluders));
+}
+
+void FieldPass::SetFindOccluders(bool on) {
+  if (on == FindOccluders) return;
+  FindOccluders = on;
+  Modified();
+}
+
+const FieldPrepareReport& FieldPass::GetFoundReport() const {
+  static const FieldPrepareReport none;
+  return Found ? Found->report() : none;
+}
+
+void FieldPass::PrepareFrame(vtkRenderer* renderer, FrameContext& context) {
+  if (!FindOccluders) return;
+  if (!Found) Found = std::make_unique<PropOccluders>();
+  if (RadiusIsGiven()) HeldRadius = 0.0;
+  else if (HeldRadius > 0.0) context.radius = HeldRadius;
+  else HeldRadius = context.radius;
+  bool started = false;
+  auto progress = [&](double f) {
+    if (!started) InvokeEvent(vtkCommand::StartEvent);
+    started = true;
+    InvokeEvent(vtkCommand::ProgressEvent, &f);
+  };
+  const bool replanned = Found->update(renderer, Settings, context.radius, context.falloff, progress);
+  if (started) InvokeEvent(vtkCommand::EndEvent);
+  if (replanned) {
+    Occluders.clear();
+    UseFields(Found->fields());
+  }
+  const std::vector<FieldOccluder>& now = Found->occluders();
+  auto same = [](const FieldOccluder& a, const FieldOccluder& b) {
+    return a.field == b.field && a.occluderToWorld == b.occluderToWorld && a.instanceId == b.instanceId &&
+           a.ownBox.min == b.ownBox.min && a.ownBox.max == b.ownBox.max;
+  };
+  if (replanned || !std::equal(now.begin(), now.end(), Occluders.begin(), Occluders.end(), same)) UseOccluders(now);
+}
+
+void FieldPass::UseFields(std::vector<std::shared_ptr<const BakedField>> fields) {
   FieldGpuData data = packFields(fields);
   Fields = std::move(fields);
   FieldData = std::move(data);
@@ -81,7 +135,7 @@ void FieldPass::SetFields(std::vector<std::shared_ptr<const BakedField>> fields)
   Modified();
 }
 
-void FieldPass::SetOccluders(std::vector<FieldOccluder> occluders) {
+void FieldPass::UseOccluders(std::vector<FieldOccluder> occluders) {
   OccluderData = packOccluders(Fields, occluders, Settings.eval.bias);
   Occluders = std::move(occluders);
   Textures.occludersChanged();
@@ -215,13 +269,17 @@ bool FieldPass::DrawOccluders(DeferredFrame& f, const TileDepths& tiles, bool cu
     p->SetUniform4f("fieldF1", field.floats + 4);
     p->SetUniform4f("fieldF2", field.floats + 8);
     p->SetUniformi("fieldOwner", static_cast<int>(o.instanceId));
+    p->SetUniform3f("fieldOwnMin", o.ownBox);
+    p->SetUniform3f("fieldOwnMax", o.ownBox + 3);
     // The quad lies at the far side of the sphere (a little beyond, against rounding).
     const double far = windowDepth(f.depthToZ, centre.z - o.sphere[3] * 1.001 - 1e-6 * std::abs(centre.z));
     glDepthRange(far, far);
-    // Receivers hold min(id, 255) >= 1: an owner the stencil cannot name compares against 0, which
-    // passes them all (one test function for every draw: one llvmpipe shader variant).
+    // Receivers hold min(id, 255) >= 1: an owner the stencil cannot name, or one whose own pixels
+    // are only those in its box, compares against 0, which passes them all (one test function for
+    // every draw: one llvmpipe shader variant).
     const std::uint32_t owner = o.instanceId;
-    f.state->vtkglStencilFunc(GL_NOTEQUAL, owner >= 1 && owner <= 254 ? static_cast<int>(owner) : 0, 0xFF);
+    const bool stencilNames = owner >= 1 && owner <= 254 && !o.sharedId;
+    f.state->vtkglStencilFunc(GL_NOTEQUAL, stencilNames ? static_cast<int>(owner) : 0, 0xFF);
     for (const TexelRect& rect : runs) {
       f.state->vtkglScissor(rect.x0, rect.y0, rect.x1 - rect.x0 + 1, rect.y1 - rect.y0 + 1);
       stage.render();

@@ -2,10 +2,17 @@
 // FieldPass: ambient occlusion from baked occluder fields (seeds 000, 001, 002) as a VTK render
 // pass, by deferred evaluation over the occluders (seed 000's Algorithm 3).
 //
+// As a drop-in, it finds its occluders itself (PropOccluders.h):
 //   vtkNew<aokit::FieldPass> ao;
-//   ao->SetFields(fields);        // distinct baked fields (BakedField.h), all of one kind
+//   ao->SetSceneRadius(R);        // bakes are for R: without one, R comes from the visible bounds
+//   renderer->SetPass(ao);        //   of the first frame and is held (a new R would re-bake)
+// Each distinct polydata is baked once (through the bake cache, keyed by content), the actors'
+// matrices are followed each frame without a bake, a polydata whose data changed is baked again,
+// and bakes report VTK StartEvent, ProgressEvent (a double in [0, 1]) and EndEvent on the pass.
+// Or with fields baked offline (the scene-graph technique, FieldTechnique.h, does this):
+//   ao->SetFields(fields);        // distinct baked fields (BakedField.h): cube ones and one grid kind
 //   ao->SetOccluders(occluders);  // each: field index, occluder -> world (a similarity), instance id
-//   renderer->SetPass(ao);        // moving an occluder: SetOccluders again, no re-bake
+//                                 // moving an occluder: SetOccluders again, no re-bake
 //
 // It is a DeferredAOPass (render/DeferredAOPass.h: G-buffer with instance ids, upsampling, combine,
 // read-back, stage timers). Its "fields" stage is seed 000's Algorithm 3, one draw per occluder:
@@ -33,6 +40,7 @@
 #include "fields/FieldSettings.h"
 #include "fields/FieldSliceView.h"
 #include "fields/FieldTextures.h"
+#include "fields/PropOccluders.h"
 #include "render/DeferredAOPass.h"
 
 namespace aokit {
@@ -47,12 +55,18 @@ class FieldPass : public DeferredAOPass {
   // uses the common, evaluation and slice settings; the bake settings are its technique's.
   void SetSettings(const FieldSettings& s);
   const FieldSettings& GetSettings() const { return Settings; }
-  // The distinct fields, uploaded at the next frame. Throws std::invalid_argument when they are of
-  // different kinds or hold no data (FieldGpuData.h).
+  // The distinct fields, uploaded at the next frame; ends the drop-in mode. Throws
+  // std::invalid_argument when they are of different kinds or hold no data (FieldGpuData.h).
   void SetFields(std::vector<std::shared_ptr<const BakedField>> fields);
-  // Where each occluder is; uploaded at the next frame (a few floats per occluder). Throws
-  // std::invalid_argument when one names a field out of range.
+  // Where each occluder is; uploaded at the next frame (a few floats per occluder); ends the
+  // drop-in mode. Throws std::invalid_argument when one names a field out of range.
   void SetOccluders(std::vector<FieldOccluder> occluders);
+  // Drop-in mode: occluders found in the renderer's props each frame (on until SetFields or
+  // SetOccluders).
+  void SetFindOccluders(bool on);
+  bool GetFindOccluders() const { return FindOccluders; }
+  // The drop-in mode's last re-plan: fields baked, read from the cache, kept.
+  const FieldPrepareReport& GetFoundReport() const;
   // Combine the per-vertex AO baked into the props (render/BakedAO.h: the occluders'
   // self-occlusion) with the fields': 1 - (1 - baked)(1 - A). Off by default.
   void SetBakedAO(bool on);
@@ -72,6 +86,7 @@ class FieldPass : public DeferredAOPass {
   ~FieldPass() override;
 
   const DeferredSettings& CommonSettings() const override { return Settings.common; }
+  void PrepareFrame(vtkRenderer* renderer, FrameContext& context) override;
   void Plan(const FrameContext& context, DeferredPlan& plan) override;
   vtkTextureObject* RenderAO(DeferredFrame& f) override;
   void RenderOverlay(DeferredFrame& f) override;
@@ -79,6 +94,8 @@ class FieldPass : public DeferredAOPass {
   void ReleaseFamily(vtkWindow* w) override;
 
  private:
+  void UseFields(std::vector<std::shared_ptr<const BakedField>> fields);
+  void UseOccluders(std::vector<FieldOccluder> occluders);
   bool RenderOccluders(DeferredFrame& f);
   bool AttachTargets(DeferredFrame& f);
   void DrawStart(DeferredFrame& f, vtkShaderProgram* p);
@@ -86,6 +103,9 @@ class FieldPass : public DeferredAOPass {
   bool ResolveCones(DeferredFrame& f);
 
   FieldSettings Settings;
+  bool FindOccluders = true;
+  std::unique_ptr<PropOccluders> Found;  // the drop-in mode's
+  double HeldRadius = 0.0;               // the drop-in mode's R when none is given
   FieldConstants Constants;  // this frame's
   bool BakedAO = false;
   std::vector<std::shared_ptr<const BakedField>> Fields;

@@ -23,6 +23,12 @@ OccluderSample evaluateOccluder(const BakedField& field, const glm::dmat4& occlu
   return out;
 }
 
+bool ownPixel(const FieldOccluder& o, std::uint32_t pixelId, const glm::dvec3& p) {
+  if (o.instanceId == 0 || o.instanceId != pixelId) return false;
+  if (!o.ownBox.valid()) return true;
+  return glm::all(glm::greaterThanEqual(p, o.ownBox.min)) && glm::all(glm::lessThanEqual(p, o.ownBox.max));
+}
+
 double evaluateFieldScene(const std::vector<std::shared_ptr<const BakedField>>& fields,
                           const std::vector<FieldOccluder>& occluders, const glm::dvec3& p, const glm::dvec3& n,
                           std::uint32_t pixelId, const FieldEvalSettings& s) {
@@ -35,7 +41,7 @@ double evaluateFieldScene(const std::vector<std::shared_ptr<const BakedField>>& 
     for (const FieldOccluder& o : occluders) {
       const BakedField& f = *fields[o.field];
       if ((f.info.kind == FieldKind::Cube) != (pass == 0)) continue;
-      if (o.instanceId != 0 && o.instanceId == pixelId) continue;
+      if (ownPixel(o, pixelId, p)) continue;
       const OccluderSample k = evaluateOccluder(f, o.occluderToWorld, p, n, s);
       samples.push_back(k);
       occlusions.push_back(k.occlusion);

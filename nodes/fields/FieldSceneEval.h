@@ -19,6 +19,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/Bounds.h"
 #include "fields/BakedField.h"
 #include "fields/FieldEvalSettings.h"
 #include "fields/OccluderCombine.h"
@@ -29,7 +30,14 @@ struct FieldOccluder {
   int field = 0;                      // index into the scene's list of distinct fields
   glm::dmat4 occluderToWorld{1.0};    // O, a similarity
   std::uint32_t instanceId = 0;       // GeometryInstance::id; 0 = skipped by no pixel
+  // Where its own pixels are, for occluders that share an id (a composite's leaves, a glyph
+  // mapper's instances: one prop): the pixels of instanceId inside this box (world). Invalid (the
+  // default): every pixel of instanceId.
+  Bounds ownBox;
 };
+
+// True when a pixel of instance `pixelId` at p (world) is the occluder's own (its field skips it).
+bool ownPixel(const FieldOccluder& o, std::uint32_t pixelId, const glm::dvec3& p);
 
 // One occluder's contribution at p (world), for combining: A_k after the fades, and for cube
 // fields the cap (Omega, Upsilon in world space, T_LUT value).

@@ -10,10 +10,6 @@
 #include "core/AOScene.h"
 #include "core/Geometry.h"
 #include "core/Scene.h"
-#include "fields/FieldBaker.h"
-#include "fields/FieldCache.h"
-#include "fields/FieldFile.h"
-#include "fields/HorizonLimit.h"
 #include "render/ActorKeys.h"
 #include "render/BakedAO.h"
 #include "render/FrameContext.h"
@@ -42,52 +38,9 @@ void FieldTechnique::prepare(AOScene& scene, const std::function<void(double)>& 
   revision_ = sceneRevision(scene);
 }
 
-std::shared_ptr<const BakedField> FieldTechnique::obtain(const PlannedField& f,
-                                                         const std::function<void(double)>& progress) {
-  const auto key = std::make_tuple(f.mesh.get(), f.radius, f.file);
-  if (auto it = baked_.find(key); it != baked_.end()) return it->second.second;
-  FieldBakeSettings bakeSettings = settings_.bake;
-  bakeSettings.kind = f.kind;
-  const BakeMesh mesh(*f.mesh);  // validated and hashed once, one Embree scene for all its bakes
-  std::shared_ptr<BakedField> field;
-  if (!f.file.empty()) {
-    field = std::make_shared<BakedField>(readFieldFile(f.file));
-    checkFieldMatches(field->info, mesh.hash(), f.radius, falloff_, f.file);
-    ++report_.fromFile;
-  } else if (settings_.cache) {
-    CachedField c = FieldCache(settings_.cacheDirectory).getOrBake(mesh, bakeSettings, f.radius, falloff_, progress);
-    if (!c.warning.empty()) report_.warnings.push_back(c.warning);
-    if (c.hit) {
-      ++report_.fromCache;
-    } else {
-      ++report_.baked;
-      report_.bakeSeconds += c.field.info.bakeSeconds;
-    }
-    field = std::make_shared<BakedField>(std::move(c.field));
-  } else {
-    field = std::make_shared<BakedField>(bakeField(mesh, bakeSettings, f.radius, falloff_, progress));
-    ++report_.baked;
-    report_.bakeSeconds += field->info.bakeSeconds;
-  }
-  if (field->info.kind == FieldKind::Cube) updateHullBox(field->radial, *f.mesh);
-  baked_[key] = {f.mesh, field};
-  return field;
-}
-
 void FieldTechnique::plan(const std::vector<GeometryInstance>& instances, const std::function<void(double)>& progress) {
   plan_ = planFields(instances, radius_, settings_.kind);
-  report_ = {};
-  report_.fields = static_cast<int>(plan_.fields.size());
-  report_.occluders = static_cast<int>(plan_.occluders.size());
-  fields_.clear();
-  const double count = static_cast<double>(plan_.fields.size());
-  for (std::size_t i = 0; i < plan_.fields.size(); ++i) {
-    auto part = [&progress, i, count](double f) {
-      if (progress) progress((static_cast<double>(i) + f) / count);
-    };
-    fields_.push_back(obtain(plan_.fields[i], part));
-  }
-  if (progress) progress(1.0);
+  fields_ = store_.obtain(plan_, settings_, falloff_, report_, progress);
   // Which planned occluder each instance is (planFields keeps instance order, skipping empty meshes).
   plannedMesh_.clear();
   plannedScale_.clear();
@@ -119,7 +72,7 @@ bool FieldTechnique::place(const std::vector<GeometryInstance>& instances) {
     const glm::dmat4 o = inst.world * plan_.occluders[k].correction;
     double s = 0.0;
     if (!isSimilarity(o, &s) || std::abs(s - plannedScale_[k]) > 1e-6 * plannedScale_[k]) return false;
-    out.push_back({plan_.occluders[k].field, o, inst.id});
+    out.push_back({plan_.occluders[k].field, o, inst.id, {}});
   }
   if (out.size() != plan_.occluders.size()) return false;
   occluders_ = std::move(out);

@@ -16,7 +16,6 @@
 #include <map>
 #include <memory>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include <vtkWeakPointer.h>
@@ -24,19 +23,12 @@
 #include "fields/FieldInstances.h"
 #include "fields/FieldPass.h"
 #include "fields/FieldSettings.h"
+#include "fields/FieldStore.h"
 #include "render/PassTechnique.h"
 
 class vtkActor;
 
 namespace aokit {
-
-// What the last prepare (or re-plan) did.
-struct FieldPrepareReport {
-  int fields = 0, occluders = 0;
-  int baked = 0, fromCache = 0, fromFile = 0;
-  double bakeSeconds = 0.0;        // summed over the fields baked now
-  std::vector<std::string> warnings;
-};
 
 class FieldTechnique : public PassTechnique {
  public:
@@ -52,7 +44,7 @@ class FieldTechnique : public PassTechnique {
   const std::vector<FieldOccluder>& occluders() const { return occluders_; }
   // Exact bytes of the field data ((N+2)^2 x 6 x 7 x 4 per cube field, ...).
   std::size_t fieldBytes() const;
-  const FieldPrepareReport& report() const { return report_; }
+  const FieldPrepareReport& report() const { return report_; }  // of the last prepare (or re-plan)
   FieldPass* pass() const;
 
  protected:
@@ -65,7 +57,6 @@ class FieldTechnique : public PassTechnique {
 
  private:
   void plan(const std::vector<GeometryInstance>& instances, const std::function<void(double)>& progress);
-  std::shared_ptr<const BakedField> obtain(const PlannedField& f, const std::function<void(double)>& progress);
   bool place(const std::vector<GeometryInstance>& instances);
   void applySelfOcclusion(vtkRenderer* renderer);
   void clearSelfOcclusion();
@@ -77,11 +68,7 @@ class FieldTechnique : public PassTechnique {
   std::vector<const TriangleMesh*> plannedMesh_;  // per planned occluder: the Geometry's mesh
   std::vector<double> plannedScale_;              // per planned occluder: scale of O
   std::map<std::uint32_t, std::size_t> byInstance_;
-  // Baked fields by (mesh, R in mesh units, file), kept across re-plans; the mesh is held so its
-  // address cannot be reused by another.
-  std::map<std::tuple<const TriangleMesh*, double, std::string>,
-           std::pair<std::shared_ptr<const TriangleMesh>, std::shared_ptr<const BakedField>>>
-      baked_;
+  FieldStore store_;  // baked fields kept across re-plans
   std::vector<std::shared_ptr<const BakedField>> fields_;
   std::vector<FieldOccluder> occluders_;
   FieldPrepareReport report_;

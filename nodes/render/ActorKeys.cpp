@@ -1,5 +1,7 @@
 #include "render/ActorKeys.h"
 
+#include <atomic>
+
 #include <vtkInformation.h>
 #include <vtkInformationIntegerKey.h>
 #include <vtkNew.h>
@@ -50,6 +52,14 @@ bool propReceivesAO(vtkProp* prop) { return keyOr(prop, ActorKeys::RECEIVES_AO()
 bool propDynamic(vtkProp* prop) { return keyOr(prop, ActorKeys::DYNAMIC(), 1) != 0; }
 std::uint32_t propInstanceId(vtkProp* prop) {
   return static_cast<std::uint32_t>(keyOr(prop, ActorKeys::INSTANCE_ID(), 0));
+}
+
+std::uint32_t ensurePropInstanceId(vtkProp* prop) {
+  if (const std::uint32_t id = propInstanceId(prop)) return id;
+  static std::atomic<std::uint32_t> next{0};
+  const std::uint32_t id = kFirstGivenInstanceId + next++ % (kLastInstanceId - kFirstGivenInstanceId + 1);
+  keysOf(prop)->Set(ActorKeys::INSTANCE_ID(), static_cast<int>(id));
+  return id;
 }
 
 std::vector<vtkProp*> casterProps(vtkRenderer* renderer) {

@@ -28,6 +28,14 @@ bool propCastsAO(vtkProp* prop);     // true when untagged
 bool propReceivesAO(vtkProp* prop);  // true when untagged
 bool propDynamic(vtkProp* prop);     // true when untagged
 std::uint32_t propInstanceId(vtkProp* prop);  // 0 when untagged
+// The prop's instance id, after giving it one when it has none (plain VTK props, in a pass that
+// tells props apart: the field family's own occluders); the prop keeps it. Given ids run from
+// 2^20 (scene-graph ids count from 1) to kLastInstanceId, then wrap.
+std::uint32_t ensurePropInstanceId(vtkProp* prop);
+// Ids travel as floats through the G-buffer and are read back as int(id + 0.5): exact below 2^23
+// (above it, id + 0.5 rounds to even and an odd id reads as its neighbour).
+constexpr std::uint32_t kFirstGivenInstanceId = 1u << 20;
+constexpr std::uint32_t kLastInstanceId = (1u << 23) - 1;
 
 // The renderer's visible props that cast AO (for passes that draw occluders only: voxelizers).
 std::vector<vtkProp*> casterProps(vtkRenderer* renderer);

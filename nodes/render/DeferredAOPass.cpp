@@ -217,6 +217,7 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   Frame.state = state;
   Frame.timer = &Timer;
   Frame.context = resolveFrameContext(CommonSettings(), SceneRadius, SceneFalloff, r);
+  PrepareFrame(r, Frame.context);
   DeferredPlan plan;
   plan.renWin = renWin;
   plan.config = makeDeferredConfig(CommonSettings(), Frame.context);

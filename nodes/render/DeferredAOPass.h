@@ -100,6 +100,11 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
 
   // The family's shared settings (radius, falloff, scale, upsampling, view).
   virtual const DeferredSettings& CommonSettings() const = 0;
+  // Before the plan, with the renderer: a family that finds its inputs in the renderer's props (the
+  // field family's own occluders) does so here, and may hold the context's radius.
+  virtual void PrepareFrame(vtkRenderer*, FrameContext&) {}
+  // Whether the radius is the user's (settings or SetSceneRadius), not taken from the visible bounds.
+  bool RadiusIsGiven() const { return CommonSettings().radius > 0.0 || SceneRadius > 0.0; }
   // This frame's plan: plan.config arrives filled from CommonSettings() and the context; the
   // family adds what it needs (channels, guard band, ids, baked AO) and lists its programs.
   virtual void Plan(const FrameContext& context, DeferredPlan& plan) = 0;

@@ -157,8 +157,15 @@ void PropMeshes::warnOnce(vtkProp* prop, const char* why) {
                                   << ") casts no AO: " << why);
 }
 
-void PropMeshes::add(vtkProp* prop, const glm::dmat4& world, bool part, std::vector<PropMesh>& out) {
+void PropMeshes::add(vtkProp* prop, vtkProp* keys, const glm::dmat4& world, bool part, std::vector<PropMesh>& out) {
+  const std::size_t first = out.size();
+  meshesOf(prop, world, part, out);
+  for (std::size_t i = first; i < out.size(); ++i) out[i].keys = keys;
+}
+
+void PropMeshes::meshesOf(vtkProp* prop, const glm::dmat4& world, bool part, std::vector<PropMesh>& out) {
   auto* actor = vtkActor::SafeDownCast(prop);
+  if (actor && !actor->HasOpaqueGeometry()) return;  // AO comes from opaque geometry (translucent props draw after it)
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
   if (!mapper) {
     if (prop->GetNumberOfPaths() > 0 && !actor) warnOnce(prop, "it draws no vtkMapper's polygons (volumes and images do not cast)");
@@ -211,15 +218,15 @@ std::vector<PropMesh> PropMeshes::collect(vtkRenderer* renderer) {
     vtkAssemblyPath* path = prop->GetNextPath();
     if (!path) continue;
     if (path->GetNumberOfItems() <= 1 && path->GetLastNode()->GetViewProp() == prop) {
-      add(prop, matrixOf(prop), false, out);
+      add(prop, prop, matrixOf(prop), false, out);
       continue;
     }
     for (; path; path = prop->GetNextPath()) {
       vtkAssemblyNode* leaf = path->GetLastNode();
       vtkProp* part = leaf->GetViewProp();
-      if (!part->GetVisibility() || !propCastsAO(part)) continue;
+      if (!part->GetVisibility()) continue;
       vtkMatrix4x4* m = leaf->GetMatrix();
-      add(part, m ? glmFromVtk(m->GetData()) : matrixOf(part), true, out);
+      add(part, prop, m ? glmFromVtk(m->GetData()) : matrixOf(part), true, out);
     }
   }
   return out;

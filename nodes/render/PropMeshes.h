@@ -10,6 +10,7 @@
 //   - vtkDataSetMapper over any other dataset: its outer surface (vtkDataSetSurfaceFilter, as
 //     the mapper draws it; one filter kept per mapper);
 //   - parts of assemblies (vtkAssembly, vtkPropAssembly) with their full matrices.
+// Translucent props (no opaque geometry) cast nothing: AO comes from the opaque geometry.
 // Any other visible prop that a family would have to cast (an image actor, a volume, a mapper
 // over non-geometric data) gets one warning naming it, once per collector, and casts nothing.
 #include <cstddef>
@@ -35,6 +36,8 @@ struct PropMesh {
   glm::dmat4 modelToWorld{1.0};
   bool wholeProp = false;     // the prop's whole geometry, placed by the prop's own matrix (its
                               // GetBounds() are this mesh's world bounds)
+  vtkProp* keys = nullptr;    // the prop whose keys (ActorKeys.h) the draw carries: the prop, or for
+                              // parts the assembly (VTK hands its keys to its parts as they draw)
 };
 
 class PropMeshes {
@@ -46,7 +49,8 @@ class PropMeshes {
   std::size_t warnings() const;
 
  private:
-  void add(vtkProp* prop, const glm::dmat4& world, bool part, std::vector<PropMesh>& out);
+  void add(vtkProp* prop, vtkProp* keys, const glm::dmat4& world, bool part, std::vector<PropMesh>& out);
+  void meshesOf(vtkProp* prop, const glm::dmat4& world, bool part, std::vector<PropMesh>& out);
   void warnOnce(vtkProp* prop, const char* why);
   vtkPolyData* surfaceOf(vtkMapper* mapper, vtkDataSet* input);
 

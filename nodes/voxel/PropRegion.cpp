@@ -68,7 +68,7 @@ bool FrameView::operator==(const FrameView& o) const {
 FrameCasters gatherCasters(vtkRenderer* renderer, PropMeshes& meshes) {
   FrameCasters out;
   for (const PropMesh& m : meshes.collect(renderer)) {
-    out.props.push_back(m.prop);
+    out.props.push_back(m.keys);  // the keys the draw carries (static or dynamic)
     out.polys.push_back(m.poly);
     out.matrices.push_back(m.modelToWorld);
     out.bounds.push_back(m.wholeProp ? fromVtk(m.prop->GetBounds()) : fromVtk(m.poly->GetBounds()).transformed(m.modelToWorld));

@@ -24,7 +24,7 @@ class vtkRenderer;
 namespace aokit {
 
 struct FrameCasters {
-  std::vector<vtkProp*> props;        // the prop of each caster mesh (render/PropMeshes.h)
+  std::vector<vtkProp*> props;        // the prop whose keys each caster mesh carries (render/PropMeshes.h)
   std::vector<vtkPolyData*> polys;    // the meshes (pipelines brought up to date)
   std::vector<glm::dmat4> matrices;   // model to world
   std::vector<Bounds> bounds;         // their world bounds

@@ -26,6 +26,7 @@
 #include <vtkSphereSource.h>
 #include <vtkUnsignedCharArray.h>
 
+#include "fields/FieldPass.h"
 #include "render/DeferredAOPass.h"
 #include "screen/ObscurancePass.h"
 #include "voxel/HybridPass.h"
@@ -67,15 +68,18 @@ struct Capture {
   const std::string& text() const { return messages->text_; }
 };
 
-enum class Family { Obscurance, Hybrid };
-inline const char* familyName(Family f) { return f == Family::Obscurance ? "obscurance" : "hybrid"; }
-inline std::vector<Family> families() { return {Family::Obscurance, Family::Hybrid}; }
+enum class Family { Obscurance, Hybrid, Field };
+inline const char* familyName(Family f) {
+  return f == Family::Obscurance ? "obscurance" : f == Family::Hybrid ? "hybrid" : "field";
+}
+inline std::vector<Family> families() { return {Family::Obscurance, Family::Hybrid, Family::Field}; }
 
 // A pass as a user makes one: defaults, the AO radius given.
 inline vtkSmartPointer<DeferredAOPass> makePass(Family f, double radius = 1.5) {
   vtkSmartPointer<DeferredAOPass> pass;
   if (f == Family::Obscurance) pass = vtkSmartPointer<ObscurancePass>::New();
-  else pass = vtkSmartPointer<HybridPass>::New();
+  else if (f == Family::Hybrid) pass = vtkSmartPointer<HybridPass>::New();
+  else pass = vtkSmartPointer<FieldPass>::New();  // finds and bakes its occluders (CTest's AOKIT_CACHE_DIR)
   pass->SetSceneRadius(radius);
   return pass;
 }

@@ -309,8 +309,8 @@ TEST(DropinMappers, APropNoFamilyCastsIsNamedOnce) {
     renderer->SetPass(pass);
     for (int i = 0; i < 3; ++i) window->Render();
     renderer->SetPass(nullptr);
-    // Screen-space families take what the G-buffer holds and cast nothing from props.
-    const std::size_t expected = family == Family::Hybrid ? 1 : 0;
+    // The screen-space family takes what the G-buffer holds and casts nothing from props.
+    const std::size_t expected = family == Family::Obscurance ? 0 : 1;
     EXPECT_EQ(capture.count("vtkVolume"), expected) << familyName(family) << ": " << capture.text();
     EXPECT_EQ(capture.count("casts no AO"), expected) << familyName(family) << ": " << capture.text();
   }
