@@ -3,6 +3,7 @@
 // DeferredAOPass, combine stage: brings the family's AO to full resolution and multiplies the lit
 // colour by 1 - AO where the prop receives AO (as vtkSSAOPass does, the G-buffer keeps no separate
 // ambient term), and writes the G-buffer depth back so later passes still depth-test. With
+// AO_MULTIPLY it writes 1 - AO only, for blending onto the window's own multisampled frame. With
 // AO_OUTPUT it writes the AO itself (the read-back: -1, or a = 0, on background); AO_DEBUG_VIEW
 // selects a view. Upsampling (AO_UPSAMPLE): 0 none (full resolution), 1 the bilinear 2x2 taps
 // around the pixel that lie within a depth tolerance of it, 2 the vertical pass of the separable
@@ -133,7 +134,9 @@ void main()
   // Baked and dynamic occlusion as independent: 1 - A = (1 - baked)(1 - AO).
   ao = receives ? AO_TYPE(1.0) - (AO_TYPE(1.0) - ao) * (1.0 - texelFetch(aoBaked, g, 0).r) : ao;
 #endif
-#if AO_OUTPUT
+#if AO_MULTIPLY
+  gl_FragData[0] = vec4(vec3(1.0) - vec3(ao), 1.0);
+#elif AO_OUTPUT
 #if AO_TRANSFER
   gl_FragData[0] = vec4(ao, covered ? 1.0 : 0.0);
 #else

@@ -32,6 +32,7 @@ struct DeferredAOPass::View {
   vtkSmartPointer<vtkTextureObject> aoTarget, zTarget, resultTarget;
   DeferredUpsampler upsampler;
   DeferredFrame frame;
+  vtkSmartPointer<vtkRenderPass> opaque;  // multisampled windows: VTK's opaque steps, drawn again
   vtkTextureObject* result = nullptr;  // the family's final AO
   bool hasFrame = false;
 
@@ -41,6 +42,8 @@ struct DeferredAOPass::View {
   }
   void release(vtkWindow* w) {
     gbuffer->ReleaseGraphicsResources(w);
+    if (opaque) opaque->ReleaseGraphicsResources(w);
+    opaque = nullptr;
     upsampler.release(w);
     aoTarget = zTarget = resultTarget = nullptr;
     framebuffer = nullptr;
@@ -91,7 +94,7 @@ void check(const DeferredConfig& c) {
 
 DeferredAOPass::DeferredAOPass()
     : After(std::make_unique<AfterOpaque>()), CombineStage("combine", DeferredCombineFS),
-      AOOutputStage("AO output", DeferredCombineFS) {}
+      AOOutputStage("AO output", DeferredCombineFS), MultiplyStage("AO multiply", DeferredCombineFS) {}
 
 DeferredAOPass::~DeferredAOPass() = default;
 
@@ -101,7 +104,10 @@ void DeferredAOPass::ReleaseOnDestroy() {
 
 void DeferredAOPass::SetDelegatePass(vtkRenderPass* delegate) {
   Delegate = delegate;
-  for (auto& [renderer, view] : Views) view->gbuffer->SetDelegatePass(GBufferDelegate());
+  for (auto& [renderer, view] : Views) {
+    view->gbuffer->SetDelegatePass(GBufferDelegate());
+    view->opaque = nullptr;
+  }
   Modified();
 }
 
@@ -143,7 +149,7 @@ GBufferPass* DeferredAOPass::GetGBufferPass(vtkRenderer* renderer) const {
   return v ? v->gbuffer.Get() : nullptr;
 }
 
-std::string DeferredAOPass::CombineDefines(const DeferredConfig& c, bool outputAO) const {
+std::string DeferredAOPass::CombineDefines(const DeferredConfig& c, CombineOutput output) const {
   const int upsample = c.upsample.window > 0 ? 2 : c.downsample > 1 ? 1 : 0;
   const int view = c.view == DebugView::AO || c.view == DebugView::Normals || c.view == DebugView::Depth
                        ? static_cast<int>(c.view)
@@ -151,18 +157,21 @@ std::string DeferredAOPass::CombineDefines(const DeferredConfig& c, bool outputA
   return "#define AO_TRANSFER " + std::to_string(c.aoChannels == 4 ? 1 : 0) +
          "\n#define AO_SCALAR(v) " + (c.aoChannels == 4 ? "(v).a" : "(v).r") +
          "\n#define AO_UPSAMPLE " + std::to_string(upsample) +
-         "\n#define AO_OUTPUT " + std::to_string(outputAO ? 1 : 0) +
+         "\n#define AO_OUTPUT " + std::to_string(output == CombineOutput::AO ? 1 : 0) +
+         "\n#define AO_MULTIPLY " + std::to_string(output == CombineOutput::Multiply ? 1 : 0) +
          "\n#define AO_BAKED " + std::to_string(c.bakedAO ? 1 : 0) +
          "\n#define AO_DEBUG_VIEW " + std::to_string(view) + "\n";
 }
 
 // Builds every program of the plan and the pipeline's own; the name of the first that fails.
-const char* DeferredAOPass::Ready(const DeferredPlan& plan) {
+const char* DeferredAOPass::Ready(const DeferredPlan& plan, bool multiply) {
   for (const auto& [stage, defines] : plan.stages)
     if (!stage->ready(Frame.renWin, defines)) return stage->name().c_str();
   for (const auto& [name, build] : plan.programs)
     if (!build()) return name.c_str();
-  if (!CombineStage.ready(Frame.renWin, CombineDefines(Frame.config, false))) return "combine";
+  if (!CombineStage.ready(Frame.renWin, CombineDefines(Frame.config, CombineOutput::Frame))) return "combine";
+  if (multiply && !MultiplyStage.ready(Frame.renWin, CombineDefines(Frame.config, CombineOutput::Multiply)))
+    return "AO multiply";
   return nullptr;
 }
 
@@ -224,16 +233,17 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   Plan(Frame.context, plan);
   check(plan.config);
   Frame.config = plan.config;
-  v.upsampler.plan(plan, CombineDefines(Frame.config, false));
+  v.upsampler.plan(plan, CombineDefines(Frame.config, CombineOutput::Frame));
   GBufferPass* gbuffer = v.gbuffer;
   gbuffer->SetGuardBand(Frame.config.guard);
   gbuffer->SetInstanceIds(Frame.config.instanceIds);
   gbuffer->SetBakedAO(Frame.config.bakedAO);
+  const bool multiply = Multisampled(r, Frame.config);
   Timer.begin();
-  const char* failed = Ready(plan);
-  if (failed && ReportedFailure != failed + CombineDefines(Frame.config, false)) {
+  const char* failed = Ready(plan, multiply);
+  if (failed && ReportedFailure != failed + CombineDefines(Frame.config, CombineOutput::Frame)) {
     vtkErrorMacro("the " << failed << " stage did not compile (log above); showing the frame without AO");
-    ReportedFailure = failed + CombineDefines(Frame.config, false);
+    ReportedFailure = failed + CombineDefines(Frame.config, CombineOutput::Frame);
   }
 
   // 2. The G-buffer.
@@ -269,7 +279,26 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
     return RenderAfterOpaque(s);
   }
   v.frame = Frame;
-  v.hasFrame = Combine(v, CombineStage, false, [&] { CombineStage.render(); });
+  if (multiply) {
+    // A multisampled window: VTK's own opaque rendering into the window's samples (anti-aliased
+    // edges and depth), then each pixel's samples multiplied by its 1 - AO. An edge pixel's
+    // samples all take the AO of the surface at its centre.
+    if (!v.opaque) v.opaque = GBufferDelegate();
+    v.opaque->Render(s);
+    state->vtkglViewport(x, y, w, h);
+    state->vtkglScissor(x, y, w, h);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglEnable(GL_BLEND);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+    state->vtkglBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ZERO, GL_ONE);
+    v.hasFrame = Combine(v, MultiplyStage, CombineOutput::Multiply, [&] { MultiplyStage.render(); });
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_TRUE);
+  } else {
+    v.hasFrame = Combine(v, CombineStage, CombineOutput::Frame, [&] { CombineStage.render(); });
+  }
   Frame.mark("combine");
   if (v.hasFrame && plan.overlay) {
     state->vtkglDisable(GL_DEPTH_TEST);
@@ -287,6 +316,21 @@ vtkSmartPointer<vtkRenderPass> DeferredAOPass::GBufferDelegate() const {
   return opaqueSteps(steps);
 }
 
+// Whether this frame applies AO to VTK's own multisampled rendering (the G-buffer is single-sampled:
+// its combined frame would give every sample of a pixel one value). Not for debug views, nor for a
+// user's delegate that is no vtkRenderStepsPass (it may draw more than opaque geometry): that is
+// said once.
+bool DeferredAOPass::Multisampled(vtkRenderer* r, const DeferredConfig& c) {
+  if (r->GetRenderWindow()->GetMultiSamples() <= 1 || c.view != DebugView::Off) return false;
+  if (!Delegate || vtkRenderStepsPass::SafeDownCast(Delegate)) return true;
+  if (!WarnedMultisamples) {
+    vtkWarningMacro("a multisampled window with a delegate pass that is no vtkRenderStepsPass: the frame is not "
+                    "anti-aliased (use FXAA)");
+    WarnedMultisamples = true;
+  }
+  return false;
+}
+
 // 7. Translucent geometry, volumes and overlays over the frame (AfterOpaque.h), unless a delegate
 // of the user's that is no vtkRenderStepsPass drew them into the G-buffer.
 void DeferredAOPass::RenderAfterOpaque(const vtkRenderState* s) {
@@ -301,9 +345,11 @@ void DeferredAOPass::RenderAfterOpaque(const vtkRenderState* s) {
 }
 
 template <class Draw>
-bool DeferredAOPass::Combine(View& v, FullScreenStage& stage, bool outputAO, Draw&& draw) {
+bool DeferredAOPass::Combine(View& v, FullScreenStage& stage, CombineOutput output, Draw&& draw) {
   const DeferredFrame& f = v.frame;
-  vtkShaderProgram* p = outputAO ? stage.ready(f.renWin, CombineDefines(f.config, true)) : stage.use(f.renWin);
+  // The AO output is built when read (the frame's variants were built before drawing).
+  vtkShaderProgram* p = output == CombineOutput::AO ? stage.ready(f.renWin, CombineDefines(f.config, output))
+                                                    : stage.use(f.renWin);
   if (!p) return false;
   GBufferPass* gbuffer = v.gbuffer;
   ActiveTextures inputs{v.result, v.zTarget, v.upsampler.rows(), v.upsampler.guide(), gbuffer->GetBakedAOTexture()};
@@ -340,7 +386,7 @@ bool DeferredAOPass::ReadAO(vtkOpenGLRenderWindow* renWin, std::vector<float>& a
   ActiveTextures gbufferTextures{gbuffer->GetDepthTexture(), gbuffer->GetNormalTexture(), gbuffer->GetColorTexture(),
                                  gbuffer->GetFlagsTexture()};
   vtkOpenGLFramebufferObject* fbo = v->framebuffer;
-  const bool ok = Combine(*v, AOOutputStage, true, [&] {
+  const bool ok = Combine(*v, AOOutputStage, CombineOutput::AO, [&] {
     AOOutputStage.renderInto(fbo, {target});
     state->PushReadFramebufferBinding();
     fbo->Bind(GL_READ_FRAMEBUFFER);
@@ -384,6 +430,7 @@ void DeferredAOPass::ReleaseGraphicsResources(vtkWindow* w) {
   After->release(w);
   CombineStage.release(w);
   AOOutputStage.release(w);
+  MultiplyStage.release(w);
   ReleaseFamily(w);
   if (auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(w)) {
     renWin->MakeCurrent();

@@ -14,7 +14,9 @@
 //      its depth is not within a tolerance of the pixel's (inside the combine), or the separable
 //      joint bilateral filter over an m x m window (render/DeferredUpsampler.h).
 //   5. combine: colour * (1 - AO) where the prop receives AO, depth written back; or the AO alone
-//      (ReadAO), or a debug view (AO, normals, depth). With baked AO on, each pixel's per-vertex
+//      (ReadAO), or a debug view (AO, normals, depth). In a multisampled window VTK draws the
+//      opaque geometry once more into the window's samples, and the combine multiplies them by
+//      1 - AO (the G-buffer is single-sampled), so edges stay anti-aliased. With baked AO on, each pixel's per-vertex
 //      baked AO (G-buffer) is combined first: AO = 1 - (1 - baked)(1 - AO).
 //   6. the family's overlay, when its plan asks for one (its own debug views).
 //   7. what VTK draws after opaque geometry (render/AfterOpaque.h): translucent geometry (depth
@@ -127,14 +129,18 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   struct View;  // one renderer's G-buffer, targets and last frame
   View& ViewOf(vtkRenderer* renderer);
   const View* FindView(vtkRenderer* renderer) const;
-  const char* Ready(const DeferredPlan& plan);
+  const char* Ready(const DeferredPlan& plan, bool multiply);
+  bool Multisampled(vtkRenderer* r, const DeferredConfig& c);
   void AllocateTargets(View& v, bool resultTarget);
   void RenderAfterOpaque(const vtkRenderState* s);
   vtkSmartPointer<vtkRenderPass> GBufferDelegate() const;
-  std::string CombineDefines(const DeferredConfig& c, bool outputAO) const;
-  // Binds the combine program (frame or AO-output variant) and its inputs, then calls draw().
+  // What the combine writes: the frame, the AO alone (ReadAO), or 1 - AO to multiply the window's
+  // own multisampled frame by.
+  enum class CombineOutput { Frame, AO, Multiply };
+  std::string CombineDefines(const DeferredConfig& c, CombineOutput output) const;
+  // Binds the combine program of that output and its inputs, then calls draw().
   template <class Draw>
-  bool Combine(View& v, FullScreenStage& stage, bool outputAO, Draw&& draw);
+  bool Combine(View& v, FullScreenStage& stage, CombineOutput output, Draw&& draw);
 
   vtkSmartPointer<vtkRenderPass> Delegate;  // null: each G-buffer's vtkRenderStepsPass
   vtkWeakPointer<vtkOpenGLRenderWindow> LastWindow;  // the window of the last frame
@@ -146,7 +152,8 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   View* Current = nullptr;  // the renderer drawn last
   std::unique_ptr<AfterOpaque> After;
   vtkSmartPointer<vtkRenderPass> Selection;  // hardware selection (pickers): VTK's own rendering
-  FullScreenStage CombineStage, AOOutputStage;
+  FullScreenStage CombineStage, AOOutputStage, MultiplyStage;
+  bool WarnedMultisamples = false;
   std::string ReportedFailure;  // the failure last reported (report once, not every frame)
 
   DeferredAOPass(const DeferredAOPass&) = delete;
