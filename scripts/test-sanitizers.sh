@@ -15,4 +15,10 @@ unset DISPLAY
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
 export LSAN_OPTIONS=suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-ctest --test-dir "$root/build-asan" --output-on-failure -j "$(nproc)" -E 'find_package_consumer|onscreen_consumer'
+ctest --test-dir "$root/build-asan" --output-on-failure -j "$(nproc)" -E 'find_package_consumer|onscreen_consumer|^Dropin'
+# The on-screen drop-in tests run with address and undefined-behaviour checks but without leak
+# reports: Mesa's GLX driver is unloaded before LeakSanitizer runs, so its per-context blocks are
+# reported from "<unknown module>" with no frame a suppression could name. Their own lifetime test
+# counts GL objects and resident memory over 130 cycles instead (test_dropin_lifetime.cpp).
+ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 \
+  ctest --test-dir "$root/build-asan" --output-on-failure -j "$(nproc)" -R '^Dropin'

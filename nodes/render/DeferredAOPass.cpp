@@ -212,6 +212,12 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
     NumberOfRenderedProps = Selection->GetNumberOfRenderedProps();
     return;
   }
+  if (LastWindow && LastWindow != renWin) {
+    // GL objects live in one window's context: the family's, the stages' and the views' of the
+    // window drawn before are released there (drawing in two windows alternately re-uploads them).
+    ReleaseGraphicsResources(LastWindow);
+    renWin->MakeCurrent();
+  }
   StateGuards guards(state);
   View& v = ViewOf(r);
   Current = &v;
@@ -421,6 +427,8 @@ std::size_t DeferredAOPass::MemoryBytes() const {
 }
 
 void DeferredAOPass::ReleaseGraphicsResources(vtkWindow* w) {
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
+  if (renWin) renWin->MakeCurrent();  // objects are deleted in the context that made them
   Superclass::ReleaseGraphicsResources(w);
   for (auto& [renderer, view] : Views) view->release(w);
   Views.clear();
@@ -432,10 +440,7 @@ void DeferredAOPass::ReleaseGraphicsResources(vtkWindow* w) {
   AOOutputStage.release(w);
   MultiplyStage.release(w);
   ReleaseFamily(w);
-  if (auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(w)) {
-    renWin->MakeCurrent();
-    Timer.release();
-  }
+  if (renWin) Timer.release();
   Frame = DeferredFrame{};
 }
 

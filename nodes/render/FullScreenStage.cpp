@@ -64,8 +64,9 @@ void FullScreenStage::renderInto(vtkOpenGLFramebufferObject* fbo, std::initializ
   state->PopFramebufferBindings();
 }
 
-void FullScreenStage::release(vtkWindow* window) {
-  if (window && quad_ && quad_->Program) quad_->Program->ReleaseGraphicsResources(window);
+// The program belongs to the window's shader cache (shared by source, released with the window,
+// which may already have freed it): only the quad's own objects are ours.
+void FullScreenStage::release(vtkWindow*) {
   delete quad_;
   quad_ = nullptr;
   failed_ = false;

@@ -373,7 +373,7 @@ std::size_t GBufferPass::MemoryBytes() const {
 void GBufferPass::ReleaseGraphicsResources(vtkWindow* w) {
   Superclass::ReleaseGraphicsResources(w);
   if (Delegate) Delegate->ReleaseGraphicsResources(w);
-  if (CopyQuad && CopyQuad->Program) CopyQuad->Program->ReleaseGraphicsResources(w);
+  // CopyQuad's program is the window's shader cache's (FullScreenStage::release).
   delete CopyQuad;
   CopyQuad = nullptr;
   for (auto& t : Targets) t = nullptr;

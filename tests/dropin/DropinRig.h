@@ -5,6 +5,7 @@
 // on-screen application does, and judge by numbers read back from the window: the canonical sphere
 // over a floor (R = 1.5), whose floor is darker under the sphere and unchanged far from it.
 #include <cmath>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -13,18 +14,24 @@
 #include <gtest/gtest.h>
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkColorTransferFunction.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOutputWindow.h>
+#include <vtkPiecewiseFunction.h>
 #include <vtkPlaneSource.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkSmartVolumeMapper.h>
 #include <vtkSphereSource.h>
 #include <vtkUnsignedCharArray.h>
+#include <vtkVolume.h>
+#include <vtkVolumeProperty.h>
 
 #include "fields/FieldPass.h"
 #include "render/DeferredAOPass.h"
@@ -121,6 +128,49 @@ struct SphereFloor {
     renderer->ResetCameraClippingRange();
   }
 };
+
+// A ball of density beside the sphere, above the floor (32^3 samples, orange), as a vtkVolume
+// drawn by vtkSmartVolumeMapper.
+inline vtkSmartPointer<vtkVolume> densityBall() {
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(32, 32, 32);
+  image->SetOrigin(1.6, -0.8, 0.8);
+  image->SetSpacing(0.05, 0.05, 0.05);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  for (int k = 0; k < 32; ++k)
+    for (int j = 0; j < 32; ++j)
+      for (int i = 0; i < 32; ++i) {
+        const double d = std::sqrt((i - 15.5) * (i - 15.5) + (j - 15.5) * (j - 15.5) + (k - 15.5) * (k - 15.5));
+        *static_cast<unsigned char*>(image->GetScalarPointer(i, j, k)) = d < 15.0 ? 200 : 0;
+      }
+  vtkNew<vtkSmartVolumeMapper> mapper;
+  mapper->SetInputData(image);
+  vtkNew<vtkColorTransferFunction> colour;
+  colour->AddRGBPoint(0, 0, 0, 0);
+  colour->AddRGBPoint(255, 1.0, 0.6, 0.2);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(255, 0.8);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetColor(colour);
+  property->SetScalarOpacity(opacity);
+  auto volume = vtkSmartPointer<vtkVolume>::New();
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  return volume;
+}
+
+// A vertical pane of glass between the camera and the floor points, opacity 0.4.
+inline vtkSmartPointer<vtkActor> glass() {
+  vtkNew<vtkPlaneSource> p;
+  p->SetOrigin(-4, -3, 0);
+  p->SetPoint1(4, -3, 0);
+  p->SetPoint2(-4, -3, 2.5);
+  auto a = actorOf(p);
+  a->GetProperty()->SetOpacity(0.4);
+  a->GetProperty()->SetColor(0.9, 0.95, 1.0);
+  return a;
+}
 
 // Floor points: in front of the gap under the sphere (within R of it), and 1.9 from its surface.
 constexpr double kContact[3] = {0.0, -1.0, 0.0};

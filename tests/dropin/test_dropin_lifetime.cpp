@@ -1,6 +1,6 @@
 // Lifetime: passes created, rendered and destroyed without ReleaseGraphicsResources, toggled on and
 // off, or moved between renderers and windows leave nothing behind: the GL objects alive and the
-// resident memory after 130 cycles equal those after the first 25 (memory within 5 MB; Mesa grows
+// resident memory after 130 cycles equal those after the first 25 (memory within 10 MB: a G-buffer leaked per cycle would be 60; passes moved between windows rebuild all they hold on each move; Mesa grows
 // its own pools once in the first frames, TechniqueLifecycle's note). One object leaked per cycle
 // shows as 100 more.
 #include <malloc.h>
@@ -64,6 +64,7 @@ double settledMB(const std::function<void()>& cycle) {
 }
 
 void expectFlat(const char* what, Family family, const std::function<void()>& cycle, vtkRenderWindow* probe) {
+  Capture capture;
   for (int i = 0; i < 20; ++i) cycle();
   const GLObjects first = liveGLObjects(probe);
   const double firstMB = settledMB(cycle);
@@ -73,7 +74,11 @@ void expectFlat(const char* what, Family family, const std::function<void()>& cy
   std::printf("%s, %s: after 25 cycles %s, %.1f MB; after 130: %s, %.1f MB\n", familyName(family), what,
               describe(first).c_str(), firstMB, describe(last).c_str(), lastMB);
   EXPECT_TRUE(last == first) << familyName(family) << ", " << what << ": " << describe(first) << " -> " << describe(last);
-  EXPECT_LT(lastMB - firstMB, 5.0) << familyName(family) << ", " << what;
+#ifndef __SANITIZE_ADDRESS__  // AddressSanitizer's quarantine holds freed memory: judged without it
+  EXPECT_LT(lastMB - firstMB, 10.0) << familyName(family) << ", " << what;
+#endif
+  EXPECT_EQ(capture.text().find("rror"), std::string::npos) << familyName(family) << ", " << what << ": "
+                                                            << capture.text().substr(0, 400);
 }
 
 }  // namespace

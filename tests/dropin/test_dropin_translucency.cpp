@@ -3,14 +3,8 @@
 // frame as VTK orders them. A translucent pane does not darken the open floor seen through it,
 // the floor under the sphere seen through it stays darker, and a volume renders as without the
 // pass, with no GL error.
-#include <vtkColorTransferFunction.h>
 #include <vtkDualDepthPeelingPass.h>
-#include <vtkImageData.h>
-#include <vtkPiecewiseFunction.h>
 #include <vtkRenderStepsPass.h>
-#include <vtkSmartVolumeMapper.h>
-#include <vtkVolume.h>
-#include <vtkVolumeProperty.h>
 
 #include "DropinRig.h"
 
@@ -18,18 +12,6 @@ using namespace aokit;
 using namespace aokit::dropin;
 
 namespace {
-
-// A vertical pane of glass between the camera and the floor points, opacity 0.4.
-vtkSmartPointer<vtkActor> glass() {
-  vtkNew<vtkPlaneSource> p;
-  p->SetOrigin(-4, -3, 0);
-  p->SetPoint1(4, -3, 0);
-  p->SetPoint2(-4, -3, 2.5);
-  auto a = actorOf(p);
-  a->GetProperty()->SetOpacity(0.4);
-  a->GetProperty()->SetColor(0.9, 0.95, 1.0);
-  return a;
-}
 
 struct Probe {
   double contact, open;
@@ -82,33 +64,7 @@ TEST(DropinTranslucency, AVolumeBesideTheSurfacesRendersAsWithoutThePass) {
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
     SphereFloor scene(renderer);
-    // A ball of density beside the sphere, above the floor: 32^3 samples.
-    vtkNew<vtkImageData> image;
-    image->SetDimensions(32, 32, 32);
-    image->SetOrigin(1.6, -0.8, 0.8);
-    image->SetSpacing(0.05, 0.05, 0.05);
-    image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-    for (int k = 0; k < 32; ++k)
-      for (int j = 0; j < 32; ++j)
-        for (int i = 0; i < 32; ++i) {
-          const double d = std::sqrt((i - 15.5) * (i - 15.5) + (j - 15.5) * (j - 15.5) + (k - 15.5) * (k - 15.5));
-          *static_cast<unsigned char*>(image->GetScalarPointer(i, j, k)) = d < 15.0 ? 200 : 0;
-        }
-    vtkNew<vtkSmartVolumeMapper> mapper;
-    mapper->SetInputData(image);
-    vtkNew<vtkColorTransferFunction> colour;
-    colour->AddRGBPoint(0, 0, 0, 0);
-    colour->AddRGBPoint(255, 1.0, 0.6, 0.2);
-    vtkNew<vtkPiecewiseFunction> opacity;
-    opacity->AddPoint(0, 0.0);
-    opacity->AddPoint(255, 0.8);
-    vtkNew<vtkVolumeProperty> property;
-    property->SetColor(colour);
-    property->SetScalarOpacity(opacity);
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(property);
-    renderer->AddVolume(volume);
+    renderer->AddVolume(densityBall());
     window->Render();
     const std::vector<unsigned char> plain = frame(window);
     auto pass = makePass(family);
