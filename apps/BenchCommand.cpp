@@ -24,6 +24,7 @@ struct BenchArgs {
   int frames = 9;
   std::uint64_t seed = 1;
   bool temporal = true;
+  bool profile = false;
 };
 
 const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes",  "tank",   "stack",
@@ -54,6 +55,7 @@ void runBenchCommand(const BenchArgs& a) {
   cfg.refSamples = a.samples;
   cfg.frames = a.frames;
   cfg.seed = a.seed;
+  cfg.profile = a.profile;
   cfg.loadScene = [&](const std::string& name) { return scenes.at(name); };
   checkOutputsInFolder(a.outDir, {"results.csv", "chart.png", "report.md", a.temporal ? "temporal.csv" : ""});
 
@@ -93,6 +95,8 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--samples", args->samples, "reference rays per pixel (the temporal run too)")
       ->capture_default_str()
       ->check(inRange(limits::kSamples));
+  cmd->add_flag("--profile", args->profile,
+               "stage times per row, each stage ended by glFinish (they add up to ao_ms; the stalls slow the frames)");
   cmd->add_option("--frames", args->frames,
                   "timed pairs (base frame, method frame) per row, and frames of the temporal run")
       ->capture_default_str()

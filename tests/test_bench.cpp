@@ -60,6 +60,7 @@ TEST(Bench, CsvHasTheRequiredColumnsInOrder) {
 
 TEST(Bench, NoAORowEqualsTheReferenceMeasuredAgainstZero) {
   BenchConfig cfg = tinyConfig();
+  cfg.profile = true;
   AOBuffer ref;
   cfg.onReference = [&](const Scene&, const SurfaceSamples&, const AOBuffer& r) { ref = r; };
   const BenchOutput out = runBench(cfg);

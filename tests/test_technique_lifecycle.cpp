@@ -85,7 +85,7 @@ struct Rig {
 
   void cycle(const std::string& method, const std::string& setting) {
     auto technique = makeTechnique(method, setting);
-    technique->setStageTiming(true);  // its timer queries must go with it too
+    technique->setStageTiming(StageTiming::Timestamps);  // its timer queries must go with it too
     scene.root->setTechnique(technique);
     view.renderer.sync();
     view.window.render();

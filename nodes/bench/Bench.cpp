@@ -54,7 +54,7 @@ void benchScene(Scene& scene, const BenchConfig& cfg, const std::vector<std::pai
   vtkNew<vtkRenderStepsPass> baseSteps;
   baseTimer->SetDelegatePass(baseSteps);
   baseTimer->SetStageName("scene");
-  baseTimer->SetStageTiming(true);
+  baseTimer->SetStageTiming(cfg.profile ? StageTiming::Finished : StageTiming::Off);
   base.window.renderer()->SetPass(baseTimer);
   auto baseFrame = [&] {
     base.renderer.sync();
@@ -78,7 +78,7 @@ void benchScene(Scene& scene, const BenchConfig& cfg, const std::vector<std::pai
       const auto t0 = std::chrono::steady_clock::now();
       technique->ensurePrepared(*scene.root);
       row.prepareMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      technique->setStageTiming(true);
+      technique->setStageTiming(cfg.profile ? StageTiming::Finished : StageTiming::Off);
     }
     scene.root->setTechnique(technique);
     view.renderer.setShadingMode(ShadingMode::Lit);
@@ -99,6 +99,7 @@ void benchScene(Scene& scene, const BenchConfig& cfg, const std::vector<std::pai
       row.aoQ1Ms = timing.aoQ1Ms;
       row.aoQ3Ms = timing.aoQ3Ms;
       row.stages = formatStageTimes(timing.stages);
+      for (const auto& st : timing.stages) row.stagesMs += st.ms;
     } else {
       // The base frame itself: no method, nothing added (a difference of the frame with itself
       // would only measure the noise).
@@ -111,7 +112,7 @@ void benchScene(Scene& scene, const BenchConfig& cfg, const std::vector<std::pai
       }
       row.baseMs = row.frameMs = quantile(ms, 0.5);
     }
-    if (technique) technique->setStageTiming(false);
+    if (technique) technique->setStageTiming(StageTiming::Off);
 
     const AOQuantity quantity = technique ? technique->quantity() : AOQuantity::Occlusion;
     const Falloff falloff = (technique && technique->falloffOverride()) ? *technique->falloffOverride()

@@ -24,6 +24,9 @@ struct BenchConfig {
   int warmup = 2;        //!< untimed pairs before the timed ones
   int frames = 9;        //!< timed pairs (base frame, method frame) per row
   bool measureRawThroughput = true;
+  // Stage times per row (StageTiming::Finished: glFinish at each stage, so they add up to ao_ms;
+  // the stalls add to the frames they are taken in). Off: no stage times, frames as users run them.
+  bool profile = false;
   bool progress = true;
   std::function<Scene(const std::string&)> loadScene;  // name/spec -> scene
   // Called after each scene with its (occlusion) reference (for `aokit demo` outputs).

@@ -27,8 +27,9 @@ void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows
         << "Each row is compared with the Embree reference of the quantity it estimates (occlusion, or 1 - W for "
            "ambient transfer, with the falloff it used) on the pixels the rasterizer covered. Times: each row is "
            "timed as interleaved pairs of base and method frames (glFinish after each); `ao ms` is the median of the "
-           "paired differences, [q1, q3] its quartiles, never clamped; `stages` are GPU timestamps (median per "
-           "stage). llvmpipe on CPU cores: compare ratios within one run, not absolute times.\n\n";
+           "paired differences, [q1, q3] its quartiles, never clamped; `stages` (with --profile) are "
+           "wall-clock ms per stage, each ended by glFinish, the base frame's own drawing subtracted from the first "
+           "(median per stage; their sum in brackets, to set against ao ms). llvmpipe on CPU cores: compare ratios within one run, not absolute times.\n\n";
     if (!chartFile.empty()) out << "![error against AO time](" << chartFile << ")\n\n";
     out << "## Reference\n\n"
         << "Throughput on identical rays with the same Embree calls on both sides (alternating runs, best of three): "
@@ -60,7 +61,7 @@ void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows
         out << "| " << r->method << " | " << (r->setting.empty() ? "-" : r->setting) << " | " << r->quantity
             << (r->falloff.empty() ? "" : " (" + r->falloff + ")") << " | " << fmt("%.1f", r->baseMs) << " | "
             << fmt("%.1f", r->frameMs) << " | " << fmt("%.2f", r->aoMs) << " [" << fmt("%.2f", r->aoQ1Ms) << ", "
-            << fmt("%.2f", r->aoQ3Ms) << "] | " << (r->stages.empty() ? "-" : r->stages) << " | "
+            << fmt("%.2f", r->aoQ3Ms) << "] | " << (r->stages.empty() ? "-" : r->stages + " (" + fmt("%.2f", r->stagesMs) + ")") << " | "
             << fmt("%.0f", r->prepareMs) << " | " << fmt("%.4f", r->rmse) << " | " << fmt("%.4f", r->mae) << " | "
             << fmt("%.3f", r->p99) << " | " << fmt("%.3f", r->ssim) << " | "
             << fmt("%.2f", r->memoryBytes / 1048576.0) << " |\n";

@@ -15,7 +15,8 @@ struct BenchRow {
   int width = 0, height = 0;
   double baseMs = 0, frameMs = 0;            // medians of the interleaved base and method frames
   double aoMs = 0, aoQ1Ms = 0, aoQ3Ms = 0;   // median and quartiles of the paired differences
-  std::string stages;                        // "name=ms;..." GPU stage medians (empty: none)
+  std::string stages;                        // "name=ms;..." stage medians, profiled runs only (empty: none)
+  double stagesMs = 0.0;                     // their sum
   double prepareMs = 0;                      // one-time work before the first frame (bakes)
   double rmse = 0, mae = 0, p99 = 0, ssim = 0;
   std::size_t memoryBytes = 0;

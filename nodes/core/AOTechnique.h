@@ -20,7 +20,13 @@ enum class Falloff;
 // bounces off the occluders' albedo), averaged over colours.
 enum class AOQuantity { Occlusion, Transfer };
 
-// GPU time of one stage of the last frame (render/StageTimer.h).
+// How stage times are taken (render/StageTimer.h): not at all; GPU timestamps (no stalls, but a
+// driver that runs commands late, as llvmpipe does, dates them wrongly); or profiling: glFinish
+// before each mark and the wall clock, so stages add up to the frame's time at the cost of the
+// overlap between them.
+enum class StageTiming { Off, Timestamps, Finished };
+
+// Time of one stage of the last frame (render/StageTimer.h).
 struct StageTime {
   std::string name;
   double ms = 0.0;
@@ -62,8 +68,8 @@ class AOTechnique {
   // ambient-only) frame.
   virtual bool readAO(vtkRenderer* /*renderer*/, std::vector<float>& /*ao*/) { return false; }
 
-  // GPU stage times of the last frame, when on (off by default: the queries cost a little).
-  virtual void setStageTiming(bool /*on*/) {}
+  // Stage times of the last frame, when on (off by default: timing costs a little).
+  virtual void setStageTiming(StageTiming /*mode*/) {}
   virtual StageTimes stageTimes() { return {}; }
 
  private:

@@ -93,7 +93,7 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   GBufferPass* GetGBufferPass(vtkRenderer* renderer = nullptr) const;
 
   // GPU stage times of the last frame (timing off by default).
-  void SetStageTiming(bool on) { Timer.setEnabled(on); }
+  void SetStageTiming(StageTiming mode) { Timer.setMode(mode); }
   const StageTimes& GetStageTimes() { return Timer.results(); }
 
  protected:

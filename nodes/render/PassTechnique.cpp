@@ -52,10 +52,10 @@ bool PassTechnique::readAO(vtkRenderer* renderer, std::vector<float>& ao) {
   return d && renWin && d->ReadAO(renWin, ao, nullptr, renderer);
 }
 
-void PassTechnique::setStageTiming(bool on) {
-  timing_ = on;
-  if (DeferredAOPass* d = deferredPass()) d->SetStageTiming(on);
-  if (TimedPass* t = TimedPass::SafeDownCast(pass_)) t->SetStageTiming(on);
+void PassTechnique::setStageTiming(StageTiming mode) {
+  timing_ = mode;
+  if (DeferredAOPass* d = deferredPass()) d->SetStageTiming(mode);
+  if (TimedPass* t = TimedPass::SafeDownCast(pass_)) t->SetStageTiming(mode);
 }
 
 StageTimes PassTechnique::stageTimes() {

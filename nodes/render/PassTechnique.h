@@ -20,7 +20,7 @@ class PassTechnique : public AOTechnique {
   // The pass's bytes (a deferred pass counts its own) and the family's extra bytes.
   std::size_t memoryBytes() const final;
   bool readAO(vtkRenderer* renderer, std::vector<float>& ao) final;
-  void setStageTiming(bool on) final;
+  void setStageTiming(StageTiming mode) final;
   StageTimes stageTimes() final;
 
  protected:
@@ -41,7 +41,7 @@ class PassTechnique : public AOTechnique {
 
  private:
   vtkSmartPointer<vtkRenderPass> pass_, previous_;
-  bool timing_ = false;
+  StageTiming timing_ = StageTiming::Off;
 };
 
 }  // namespace aokit

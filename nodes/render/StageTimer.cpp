@@ -1,5 +1,6 @@
 #include "render/StageTimer.h"
 
+#include <chrono>
 #include <cstdio>
 
 #include <vtk_glew.h>
@@ -19,21 +20,29 @@ std::string formatStageTimes(const StageTimes& stages) {
 StageTimer::~StageTimer() = default;  // GL objects need a context: release() is the owner's call
 
 void StageTimer::begin() {
-  if (!enabled_) return;
   if (pending_) collect();
+  pendingMode_ = mode_;
+  if (!enabled()) return;
   used_ = 0;
   names_.clear();
+  wallMs_.clear();
   mark(nullptr);
 }
 
 void StageTimer::mark(const char* stage) {
-  if (!enabled_) return;
-  if (used_ == static_cast<int>(queries_.size())) {
-    GLuint q = 0;
-    glGenQueries(1, &q);
-    queries_.push_back(q);
+  if (!enabled() || mode_ != pendingMode_) return;  // a mode set mid-frame waits for the next
+  if (mode_ == StageTiming::Finished) {
+    glFinish();
+    wallMs_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count());
+    ++used_;
+  } else {
+    if (used_ == static_cast<int>(queries_.size())) {
+      GLuint q = 0;
+      glGenQueries(1, &q);
+      queries_.push_back(q);
+    }
+    glQueryCounter(queries_[used_++], GL_TIMESTAMP);
   }
-  glQueryCounter(queries_[used_++], GL_TIMESTAMP);
   if (stage) names_.emplace_back(stage);
   pending_ = used_ > 1;
 }
@@ -41,12 +50,16 @@ void StageTimer::mark(const char* stage) {
 void StageTimer::collect() {
   pending_ = false;
   last_.clear();
-  GLuint64 previous = 0;
-  for (int i = 0; i < used_; ++i) {
-    GLuint64 t = 0;
-    glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &t);
-    if (i > 0) last_.push_back({names_[i - 1], static_cast<double>(t - previous) * 1e-6});
-    previous = t;
+  if (pendingMode_ == StageTiming::Finished) {
+    for (int i = 1; i < used_; ++i) last_.push_back({names_[i - 1], wallMs_[i] - wallMs_[i - 1]});
+  } else {
+    GLuint64 previous = 0;
+    for (int i = 0; i < used_; ++i) {
+      GLuint64 t = 0;
+      glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &t);
+      if (i > 0) last_.push_back({names_[i - 1], static_cast<double>(t - previous) * 1e-6});
+      previous = t;
+    }
   }
   // Stages marked twice in one frame (a stage run per occluder, say) are summed into one entry.
   StageTimes merged;
@@ -71,6 +84,7 @@ void StageTimer::release() {
   if (!queries_.empty()) glDeleteQueries(static_cast<GLsizei>(queries_.size()), queries_.data());
   queries_.clear();
   names_.clear();
+  wallMs_.clear();
   used_ = 0;
   pending_ = false;
 }

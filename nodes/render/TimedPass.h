@@ -18,7 +18,7 @@ class TimedPass : public vtkRenderPass {
 
   void SetDelegatePass(vtkRenderPass* delegate) { Delegate = delegate; }
   void SetStageName(const std::string& name) { StageName = name; }
-  void SetStageTiming(bool on) { Timer.setEnabled(on); }
+  void SetStageTiming(StageTiming mode) { Timer.setMode(mode); }
   const StageTimes& GetStageTimes() { return Timer.results(); }
 
   void Render(const vtkRenderState* s) override;
