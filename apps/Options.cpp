@@ -36,8 +36,8 @@ bool isMeshFile(const std::string& spec) {
 }
 
 // A lone mesh: camera from its bounds, R a tenth of its diagonal.
-Scene meshScene(const std::string& path) {
-  auto mesh = std::make_shared<TriangleMesh>(loadMesh(path));
+Scene meshScene(const std::string& path, double featureAngle) {
+  auto mesh = std::make_shared<TriangleMesh>(loadMesh(path, featureAngle));
   Scene s;
   s.name = std::filesystem::path(path).stem().string();
   s.root->addChild(std::make_shared<Geometry>(mesh, glm::vec3(0.8f)));
@@ -51,11 +51,11 @@ Scene meshScene(const std::string& path) {
 }
 }  // namespace
 
-Scene resolveScene(const std::string& spec) {
+Scene resolveScene(const std::string& spec, double featureAngle) {
   for (const auto& n : builtinSceneNames())
     if (n == spec) return makeBuiltinScene(spec);
   if (spec.size() > 5 && spec.substr(spec.size() - 5) == ".json") return loadSceneFile(spec);
-  if (isMeshFile(spec)) return meshScene(spec);
+  if (isMeshFile(spec)) return meshScene(spec, featureAngle);
   std::string known;
   for (const auto& n : builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown scene '" + spec + "': not a built-in (" + known +
@@ -121,6 +121,10 @@ void SceneOptions::add(CLI::App& cmd) {
   cmd.add_option("--view-angle", viewAngle, "vertical view angle, degrees (1..179)")->check(inRange(limits::kViewAngle));
   cmd.add_option("--ao-radius", aoRadius, "AO radius R in world units (default: the scene's)")
       ->check(inRange(limits::kAORadius));
+  cmd.add_option("--feature-angle", featureAngle,
+                 "a mesh file without normals: faces meeting at more than this many degrees get normals of their "
+                 "own (default 30; 180 smooths across every edge; scene files: 'featureAngle' per mesh)")
+      ->check(inRange(limits::kFeatureAngle));
 }
 
 void SceneOptions::addPositional(CLI::App& cmd) {
@@ -135,7 +139,10 @@ std::string SceneOptions::spec() const {
 }
 
 Scene SceneOptions::load() const {
-  Scene s = resolveScene(spec());
+  if (featureAngle && !isMeshFile(spec()))
+    throw std::invalid_argument("--feature-angle applies to a mesh file given as the scene ('" + spec() +
+                                "' is not one; scene files set 'featureAngle' per mesh)");
+  Scene s = resolveScene(spec(), featureAngle.value_or(kDefaultFeatureAngle));
   if (!cameraPosition.empty()) s.camera.position = vec3Option(cameraPosition, "--camera-position");
   if (!focalPoint.empty()) s.camera.focalPoint = vec3Option(focalPoint, "--focal-point");
   if (!viewUp.empty()) s.camera.viewUp = vec3Option(viewUp, "--view-up");

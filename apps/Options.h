@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "core/Scene.h"
+#include "core/FeatureNormals.h"
 #include "io/SceneLimits.h"
 
 namespace aokit::cli {
@@ -18,6 +19,7 @@ struct SceneOptions {
   std::vector<double> cameraPosition, focalPoint, viewUp;
   std::optional<double> viewAngle;
   std::optional<double> aoRadius;
+  std::optional<double> featureAngle;  // --feature-angle: a mesh file's, when it has no normals
 
   void add(CLI::App& cmd);
   // Also accept the scene as a positional argument (`aokit render bunny`).
@@ -35,8 +37,9 @@ struct SceneOptions {
 // number in [0, 18446744073709551615]".
 CLI::Validator inRange(const NumberRange& range);
 
-// A built-in scene name, a .json scene file or a mesh file -> Scene.
-Scene resolveScene(const std::string& spec);
+// A built-in scene name, a .json scene file or a mesh file (its normals, when it has none, split
+// at featureAngle degrees) -> Scene.
+Scene resolveScene(const std::string& spec, double featureAngle = kDefaultFeatureAngle);
 
 // The list syntax of --scenes and --methods: items separated by ',' or ';', options repeatable.
 // In a method list an item "key=value" without a method continues the previous item's settings,

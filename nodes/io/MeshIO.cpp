@@ -51,8 +51,9 @@ void checkCoordinateRange(const TriangleMesh& m) {
       }
 }
 
-// Keeps file normals only when they are all usable, then makes them unit length.
-void finishNormals(TriangleMesh& m) {
+// Keeps file normals only when they are all usable, then makes them unit length; else normals
+// that follow the mesh's edges.
+void finishNormals(TriangleMesh& m, double featureAngle) {
   bool usable = m.normals.size() == m.positions.size() && !m.normals.empty();
   for (std::size_t i = 0; usable && i < m.normals.size(); ++i) {
     const glm::vec3& n = m.normals[i];
@@ -60,7 +61,7 @@ void finishNormals(TriangleMesh& m) {
     usable = std::isfinite(len) && len > 1e-12f;
   }
   if (!usable) {
-    m.computeNormals();
+    m = withFeatureNormals(m, featureAngle);
     return;
   }
   for (auto& n : m.normals) n = glm::normalize(n);
@@ -109,7 +110,7 @@ ReadResult readWithLibraries(const std::string& path, const std::string& ext) {
   return r;
 }
 
-TriangleMesh read(const std::string& path, const std::string& ext) {
+TriangleMesh read(const std::string& path, const std::string& ext, double featureAngle) {
   std::error_code ec;
   const auto status = fs::status(path, ec);
   if (!fs::exists(status)) throw std::runtime_error("no such file");
@@ -128,7 +129,7 @@ TriangleMesh read(const std::string& path, const std::string& ext) {
     throw std::runtime_error("not a mesh " + readerNames(ext) + " can read" + (r.why.empty() ? "" : " (" + r.why + ")"));
   r.mesh.validate();  // before the normals: computing them needs finite positions
   checkCoordinateRange(r.mesh);
-  finishNormals(r.mesh);
+  finishNormals(r.mesh, featureAngle);
   return std::move(r.mesh);
 }
 
@@ -136,7 +137,9 @@ TriangleMesh read(const std::string& path, const std::string& ext) {
 
 std::vector<std::string> meshExtensions() { return {std::begin(kExtensions), std::end(kExtensions)}; }
 
-TriangleMesh loadMesh(const std::string& path) {
+TriangleMesh loadMesh(const std::string& path, double featureAngle) {
+  if (!limits::kFeatureAngle.contains(featureAngle))
+    throw std::invalid_argument("feature angle must be " + limits::kFeatureAngle.describe());
   const std::string ext = lower(fs::path(path).extension().string());
   if (std::none_of(std::begin(kExtensions), std::end(kExtensions), [&](const char* e) { return ext == e; })) {
     std::string known;
@@ -144,7 +147,7 @@ TriangleMesh loadMesh(const std::string& path) {
     throw std::runtime_error(path + ": unknown mesh extension '" + ext + "' (known: " + known + ")");
   }
   try {
-    return read(path, ext);
+    return read(path, ext, featureAngle);
   } catch (const std::bad_alloc&) {
     throw std::runtime_error(path + ": out of memory while reading");
   } catch (const std::exception& e) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/FeatureNormals.h"
 #include "core/TriangleMesh.h"
 
 namespace aokit {
@@ -13,7 +14,9 @@ namespace aokit {
 // .vtk. Polygons are fan-triangulated (exact for convex ones), non-manifold parts kept as they are
 // (a triangle soup, as renderers want it). File normals are kept only where the format stores
 // them per vertex (PLY, NOFF, VTK point normals) and every vertex has a usable one; otherwise
-// normals are computed. The result passes TriangleMesh::validate().
+// normals follow the mesh's edges: vertices are split where faces meet at more than
+// `featureAngle` degrees (core/FeatureNormals.h; 180 smooths across every edge). The result
+// passes TriangleMesh::validate().
 //
 // Every failure throws std::runtime_error with one line "<path>: <problem>", e.g.
 // "x.off: face 3 refers to vertex 12, but the file has 8 vertices". Files are first checked here
@@ -22,7 +25,7 @@ namespace aokit {
 // runaway allocations on corrupt files become errors too. Nothing is printed.
 // Limits: files up to 1 GiB; OFF must be ASCII with each face on one line. README "Input
 // validation" lists what each format's checks refuse and which leniencies they keep.
-TriangleMesh loadMesh(const std::string& path);
+TriangleMesh loadMesh(const std::string& path, double featureAngle = kDefaultFeatureAngle);
 
 // The extensions loadMesh accepts, with the dot, lower case.
 std::vector<std::string> meshExtensions();

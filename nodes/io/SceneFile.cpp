@@ -156,8 +156,10 @@ class ObjectReader {
     if (hasMesh == hasShape) o.fail(hasMesh ? "has both 'mesh' and 'shape'" : "needs a 'mesh' or a 'shape'");
     std::shared_ptr<const TriangleMesh> mesh;
     if (hasMesh) {
-      o.allowOnly({"name", "mesh", "translate", "rotate", "scale", "albedo", "field"});
-      mesh = loadCached(o["mesh"]);
+      o.allowOnly({"name", "mesh", "featureAngle", "translate", "rotate", "scale", "albedo", "field"});
+      const double featureAngle =
+          o.has("featureAngle") ? o["featureAngle"].number(limits::kFeatureAngle) : kDefaultFeatureAngle;
+      mesh = loadCached(o["mesh"], featureAngle);
     } else {
       mesh = parseShape(o);
     }
@@ -168,16 +170,16 @@ class ObjectReader {
   }
 
  private:
-  // The same file named twice is loaded once and shared.
-  std::shared_ptr<const TriangleMesh> loadCached(const JsonField& f) {
+  // The same file named twice (with one feature angle) is loaded once and shared.
+  std::shared_ptr<const TriangleMesh> loadCached(const JsonField& f, double featureAngle) {
     fs::path p = f.string();
     if (p.empty()) f.fail("expected a file name");
     if (p.is_relative()) p = baseDir_ / p;
     const std::string key = p.lexically_normal().string();
-    auto& slot = cache_[key];
+    auto& slot = cache_[{key, featureAngle}];
     if (!slot) {
       try {
-        slot = std::make_shared<TriangleMesh>(loadMesh(key));
+        slot = std::make_shared<TriangleMesh>(loadMesh(key, featureAngle));
       } catch (const std::exception& e) {
         f.fail(e.what());
       }
@@ -203,7 +205,7 @@ class ObjectReader {
   }
 
   fs::path baseDir_;
-  std::map<std::string, std::shared_ptr<const TriangleMesh>> cache_;
+  std::map<std::pair<std::string, double>, std::shared_ptr<const TriangleMesh>> cache_;
 };
 
 Scene parseScene(const JsonField& top, const fs::path& file) {

@@ -30,6 +30,8 @@ struct NumberRange {
 namespace limits {
 // Camera.
 inline constexpr NumberRange kViewAngle{"view angle", "degrees", 1.0, 179.0};
+// Meshes without usable normals: faces meeting at more than this get their own (core/FeatureNormals.h).
+inline constexpr NumberRange kFeatureAngle{"feature angle", "degrees", 0.0, 180.0};
 // Positions, focal points, translations: finite and far below the range where VTK's camera
 // arithmetic (squares of distances) overflows.
 inline constexpr NumberRange kCoordinate{"coordinate", "scene units", -1e15, 1e15};
