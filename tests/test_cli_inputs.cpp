@@ -231,3 +231,17 @@ TEST_F(CliInputs, LeniencyKeptForOddButUnambiguousFiles) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(fs::exists(path("ok.png")));
 }
+
+TEST_F(CliInputs, FeatureAngleOnlyForAMeshSceneAndInRange) {
+  const std::string mesh = write("tri.off", kOffHead + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const clitest::CliResult builtin = clitest::runAokit({"render", "sphere-plane", "--feature-angle", "10", "-o", mesh + ".png"});
+  EXPECT_EQ(builtin.code, 1);
+  EXPECT_NE(builtin.err.find("--feature-angle applies to a mesh file given as the scene"), std::string::npos)
+      << builtin.err;
+  const clitest::CliResult range = clitest::runAokit({"render", mesh, "--feature-angle", "200", "-o", mesh + ".png"});
+  EXPECT_EQ(range.code, 2);
+  EXPECT_NE(range.err.find("--feature-angle: '200' is not a number in [0, 180] degrees"), std::string::npos)
+      << range.err;
+  const clitest::CliResult good = clitest::runAokit({"render", mesh, "--feature-angle", "180", "--size", "64x48", "-o", mesh + ".png"});
+  EXPECT_EQ(good.code, 0) << good.err;
+}

@@ -140,6 +140,13 @@ TEST_F(SceneFile, ShapesMeshesAndPlacement) {
   EXPECT_EQ(inst[2].geometry->albedo(), glm::vec3(0.1f, 0.2f, 0.3f));
   EXPECT_EQ(inst[3].geometry->albedo(), glm::vec3(0.8f));
   EXPECT_EQ(inst[2].geometry->mesh(), inst[3].geometry->mesh());  // one file, loaded once
+  // The same file with another feature angle is another mesh.
+  const std::string twice = write("twice.json", R"({"aoRadius": 1,
+    "camera": {"position": [0, -5, 3], "focalPoint": [0, 0, 0]},
+    "objects": [{"mesh": "meshes/tri.off"}, {"mesh": "meshes/tri.off", "featureAngle": 180}]})");
+  const auto both = collectInstances(*loadSceneFile(twice).root);
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_NE(both[0].geometry->mesh(), both[1].geometry->mesh());
   EXPECT_EQ(inst[3].geometry->name(), "again");
 }
 
@@ -203,6 +210,11 @@ TEST_F(SceneFile, MalformedInputs) {
   expectError(scene(kCam, R"([{"mesh": "meshes/missing.off"}])"), "missing.off: no such file");
   expectError(scene(kCam, R"([{"mesh": "meshes/nan.off"}])"), "vertex 3 has a NaN or infinite coordinate");
   expectError(scene(kCam, R"([{"mesh": 7}])"), "objects[0].mesh: expected a string");
+  expectError(scene(kCam, R"([{"mesh": "meshes/tri.off", "featureAngle": 200}])"),
+              "objects[0].featureAngle: expected a number in [0, 180] degrees");
+  expectError(scene(kCam, R"([{"mesh": "meshes/tri.off", "featureAngle": "sharp"}])"),
+              "objects[0].featureAngle: expected a number");
+  expectError(scene(kCam, R"([{"shape": "box", "featureAngle": 30}])"), "objects[0].featureAngle: unknown key");
 
   expectError(R"({"builtin": "nope"})", "builtin: unknown scene 'nope'");
   expectError(R"({"builtin": "cubes", "options": {"cubeCount": 0}})", "options.cubeCount: expected an integer in [1, 100]");
