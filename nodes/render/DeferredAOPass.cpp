@@ -18,68 +18,15 @@
 
 #include "DeferredCombineFS.h"
 #include "render/AfterOpaque.h"
+#include "render/DeferredView.h"
+#include "render/SelectionGeometry.h"
+#include "render/StateGuards.h"
 #include "render/DeferredUpsampler.h"
 #include "render/Textures.h"
 
 namespace aokit {
 
-// One renderer's share of the pass: its G-buffer, AO targets and last frame, so that one pass can
-// serve several renderers (viewports, views) and read each one's AO back.
-struct DeferredAOPass::View {
-  vtkWeakPointer<vtkRenderer> renderer;
-  vtkNew<GBufferPass> gbuffer;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> framebuffer;
-  vtkSmartPointer<vtkTextureObject> aoTarget, zTarget, resultTarget;
-  DeferredUpsampler upsampler;
-  DeferredFrame frame;
-  vtkSmartPointer<vtkRenderPass> opaque;  // multisampled windows: VTK's opaque steps, drawn again
-  vtkTextureObject* result = nullptr;  // the family's final AO
-  bool hasFrame = false;
-
-  std::size_t memoryBytes() const {
-    return gbuffer->MemoryBytes() + textureBytes(aoTarget) + textureBytes(zTarget) + textureBytes(resultTarget) +
-           upsampler.memoryBytes();
-  }
-  void release(vtkWindow* w) {
-    gbuffer->ReleaseGraphicsResources(w);
-    if (opaque) opaque->ReleaseGraphicsResources(w);
-    opaque = nullptr;
-    upsampler.release(w);
-    aoTarget = zTarget = resultTarget = nullptr;
-    framebuffer = nullptr;
-    result = nullptr;
-    frame = DeferredFrame{};
-    hasFrame = false;
-  }
-};
-
 namespace {
-
-// Hardware selection (vtkPropPicker, vtkHardwareSelector, area picking) renders prop ids through
-// the renderer's own geometry update, which a custom pass replaces: draw what VTK's pipeline draws
-// then, so the selector sees every prop as it would without the pass.
-class SelectionGeometry : public vtkRenderPass {
- public:
-  static SelectionGeometry* New();
-  vtkTypeMacro(SelectionGeometry, vtkRenderPass);
-  void Render(const vtkRenderState* s) override {
-    UpdateGeometry(s->GetRenderer(), s->GetFrameBuffer());
-    NumberOfRenderedProps = s->GetPropArrayCount();
-  }
-};
-vtkStandardNewMacro(SelectionGeometry);
-
-// Saves what the stages change and restores it when the pass returns.
-struct StateGuards {
-  vtkOpenGLState::ScopedglEnableDisable blend, depthTest, scissorTest;
-  vtkOpenGLState::ScopedglViewport viewport;
-  vtkOpenGLState::ScopedglScissor scissor;
-  vtkOpenGLState::ScopedglDepthFunc depthFunc;
-  vtkOpenGLState::ScopedglDepthMask depthMask;
-  explicit StateGuards(vtkOpenGLState* s)
-      : blend(s, GL_BLEND), depthTest(s, GL_DEPTH_TEST), scissorTest(s, GL_SCISSOR_TEST), viewport(s), scissor(s),
-        depthFunc(s), depthMask(s) {}
-};
 
 // What the plan's configuration must hold whatever the family says (its settings are validated
 // by their schema; this guards the family's own additions).
