@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -158,6 +159,19 @@ inline vtkSmartPointer<vtkVolume> densityBall() {
   volume->SetMapper(mapper);
   volume->SetProperty(property);
   return volume;
+}
+
+// The density ball's pixels (orange in the frame without the pass: red well above blue), and how
+// many of them the other frame keeps within 12 levels of red and green.
+inline std::pair<std::size_t, std::size_t> keptVolumePixels(const std::vector<unsigned char>& plain,
+                                                            const std::vector<unsigned char>& other) {
+  std::size_t volumePixels = 0, kept = 0;
+  for (std::size_t i = 0; i < plain.size(); i += 4)
+    if (plain[i] > plain[i + 2] + 60) {
+      ++volumePixels;
+      kept += std::abs(int(plain[i]) - int(other[i])) <= 12 && std::abs(int(plain[i + 1]) - int(other[i + 1])) <= 12;
+    }
+  return {volumePixels, kept};
 }
 
 // A vertical pane of glass between the camera and the floor points, opacity 0.4.

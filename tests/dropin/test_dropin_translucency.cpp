@@ -72,14 +72,9 @@ TEST(DropinTranslucency, AVolumeBesideTheSurfacesRendersAsWithoutThePass) {
     window->Render();
     const std::vector<unsigned char> withAO = frame(window);
     renderer->SetPass(nullptr);
-    // The volume's pixels: orange in the plain frame (red well above blue); there the frame with
-    // AO must be the same within a few levels (the floor behind the ball gets its AO, faintly).
-    std::size_t volumePixels = 0, kept = 0;
-    for (std::size_t i = 0; i < plain.size(); i += 4)
-      if (plain[i] > plain[i + 2] + 60) {
-        ++volumePixels;
-        kept += std::abs(int(plain[i]) - int(withAO[i])) <= 12 && std::abs(int(plain[i + 1]) - int(withAO[i + 1])) <= 12;
-      }
+    // There the frame with AO must be the same within a few levels (the floor behind the ball gets
+    // its AO, faintly).
+    const auto [volumePixels, kept] = keptVolumePixels(plain, withAO);
     std::printf("%s: %zu volume pixels, %zu within 12 levels with the pass\n", familyName(family), volumePixels, kept);
     ASSERT_GT(volumePixels, 500u);
     EXPECT_GT(double(kept) / volumePixels, 0.95) << familyName(family);

@@ -82,12 +82,7 @@ TEST(DropinVtkSSAO, RecordsWhatVTKsOwnPassDoesInTheDropinCases) {
     window->Render();
     const std::vector<unsigned char> withAO = frame(window);
     renderer->SetPass(nullptr);
-    std::size_t volumePixels = 0, kept = 0;
-    for (std::size_t i = 0; i < plain.size(); i += 4)
-      if (plain[i] > plain[i + 2] + 60) {
-        ++volumePixels;
-        kept += std::abs(int(plain[i]) - int(withAO[i])) <= 12 && std::abs(int(plain[i + 1]) - int(withAO[i + 1])) <= 12;
-      }
+    const auto [volumePixels, kept] = keptVolumePixels(plain, withAO);
     std::printf("vtkSSAOPass, a volume beside the surfaces: %zu of %zu volume pixels kept\n", kept, volumePixels);
   }
 
