@@ -144,7 +144,8 @@ TEST_F(SceneFile, ShapesMeshesAndPlacement) {
   const std::string twice = write("twice.json", R"({"aoRadius": 1,
     "camera": {"position": [0, -5, 3], "focalPoint": [0, 0, 0]},
     "objects": [{"mesh": "meshes/tri.off"}, {"mesh": "meshes/tri.off", "featureAngle": 180}]})");
-  const auto both = collectInstances(*loadSceneFile(twice).root);
+  const Scene two = loadSceneFile(twice);  // instances point into the scene: keep it alive
+  const auto both = collectInstances(*two.root);
   ASSERT_EQ(both.size(), 2u);
   EXPECT_NE(both[0].geometry->mesh(), both[1].geometry->mesh());
   EXPECT_EQ(inst[3].geometry->name(), "again");
