@@ -31,7 +31,7 @@ struct Ratios {
 // The floor's brightness with vtkSSAOPass over without it, under the sphere and on open floor, in a
 // window whose renderer has the given viewport and extra props.
 template <class Add>
-Ratios floorRatios(const double viewport[4], Add&& add, Capture& capture) {
+Ratios floorRatios(const double viewport[4], Add&& add) {
   vtkNew<vtkRenderWindow> window;
   window->SetSize(400, 300);
   window->SetMultiSamples(0);
@@ -47,7 +47,6 @@ Ratios floorRatios(const double viewport[4], Add&& add, Capture& capture) {
   window->Render();
   Ratios r{brightness(window, renderer, kContact) / contact, brightness(window, renderer, kOpen) / open};
   renderer->SetPass(nullptr);
-  (void)capture;
   return r;
 }
 
@@ -57,14 +56,14 @@ TEST(DropinVtkSSAO, RecordsWhatVTKsOwnPassDoesInTheDropinCases) {
   AOKIT_REQUIRE_DISPLAY();
   Capture capture;
   const double whole[4] = {0, 0, 1, 1}, rightHalf[4] = {0.5, 0, 1, 1};
-  const Ratios own = floorRatios(whole, [](vtkRenderer*) {}, capture);
+  const Ratios own = floorRatios(whole, [](vtkRenderer*) {});
   std::printf("vtkSSAOPass, a window of its own: contact x%.3f, open floor x%.3f\n", own.contact, own.open);
   EXPECT_LT(own.contact, 0.9) << "the rig does not see vtkSSAOPass's AO";
 
-  const Ratios right = floorRatios(rightHalf, [](vtkRenderer*) {}, capture);
+  const Ratios right = floorRatios(rightHalf, [](vtkRenderer*) {});
   std::printf("vtkSSAOPass, viewport [0.5, 1]: contact x%.3f, open floor x%.3f\n", right.contact, right.open);
 
-  const Ratios glassed = floorRatios(whole, [](vtkRenderer* r) { r->AddActor(glass()); }, capture);
+  const Ratios glassed = floorRatios(whole, [](vtkRenderer* r) { r->AddActor(glass()); });
   std::printf("vtkSSAOPass, glass (opacity 0.4) in front: contact x%.3f, open floor seen through it x%.3f\n",
               glassed.contact, glassed.open);
 
