@@ -22,6 +22,7 @@ struct ReferenceArgs {
   int samples = 256;
   std::string falloff;
   std::string quantity = "occlusion";
+  std::string hemisphere = "geometric";
   std::uint64_t seed = 1;
   std::string output = "reference";
 };
@@ -31,6 +32,8 @@ void runReference(const ReferenceArgs& a) {
   a.scene.imageSize(w, h);
   if (a.quantity != "occlusion" && a.quantity != "transfer")
     throw std::invalid_argument("--quantity must be occlusion or transfer, got '" + a.quantity + "'");
+  if (a.hemisphere != "geometric" && a.hemisphere != "shading")
+    throw std::invalid_argument("--hemisphere must be geometric or shading, got '" + a.hemisphere + "'");
   Scene scene = a.scene.load();
   checkOutputPaths({a.output + ".png", a.output + ".f32", a.output + "-stderr.f32"});
   applyFalloff(scene, a.falloff);
@@ -39,6 +42,7 @@ void runReference(const ReferenceArgs& a) {
   EmbreeScene embree(*scene.root);
   ReferenceOptions opt = sceneReferenceOptions(*scene.root, a.samples, a.seed);
   opt.quantity = a.quantity == "transfer" ? AOQuantity::Transfer : AOQuantity::Occlusion;
+  opt.hemisphere = a.hemisphere == "shading" ? Hemisphere::Shading : Hemisphere::Geometric;
   Progress progress("reference " + scene.name);
   opt.progress = progress.reporter();
   ReferenceStats stats;
@@ -65,6 +69,9 @@ void addReferenceCommand(CLI::App& app) {
   cmd->add_option("--falloff", args->falloff, "binary, wendland, sqrt, exponential (default: the scene's)");
   cmd->add_option("--quantity", args->quantity,
                   "occlusion, or transfer (1 - W, the ambient transfer of seed 003, eq. 6, from the albedos)")
+      ->capture_default_str();
+  cmd->add_option("--hemisphere", args->hemisphere,
+                  "geometric (the hit facet's hemisphere and cosine) or shading (the G-buffer normal's)")
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "sampling seed")->capture_default_str()->check(inRange(limits::kSeed64));
   cmd->add_option("--output,-o", args->output, "output prefix: PREFIX.png, PREFIX.f32, PREFIX-stderr.f32")

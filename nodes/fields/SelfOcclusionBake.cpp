@@ -37,6 +37,7 @@ std::vector<float> bakeVertexOcclusion(const BakeMesh& input, double radius, Fal
   options.seed = seed;
   options.threads = threads;
   options.progress = progress;
+  options.hemisphere = Hemisphere::Shading;  // per vertex: no one facet, the vertex normal's hemisphere
   const AOBuffer ao = computeReferenceAO(scene, samples, options);
   std::vector<float> out(count, 0.0f);
   for (std::size_t i = 0; i < count; ++i) out[i] = ao.covered[i] ? ao.ao[i] : 0.0f;

@@ -214,7 +214,7 @@ AOBuffer computeReferenceAO(const EmbreeScene& scene, const SurfaceSamples& samp
             out.covered[i] = 1;
             continue;
           }
-          const SurfaceRay sr = makeSurfaceRay(scene, samples.position[i], samples.normal[i], options.rayOffset);
+          const SurfaceRay sr = makeSurfaceRay(scene, samples.position[i], samples.normal[i], options.rayOffset, options.hemisphere);
           if (!sr.valid) continue;
           const Estimate e = tracer.pixel(sr, HemisphereSampler::pixelShift(i, options.seed));
           out.ao[i] = static_cast<float>(e.mean);
@@ -262,7 +262,7 @@ double measureRawThroughput(const EmbreeScene& scene, const SurfaceSamples& samp
     for (int x = 0; x < samples.width; ++x) {
       const std::size_t i = samples.index(x, y);
       if (!samples.covered[i] || !samples.receives[i]) continue;
-      const SurfaceRay sr = makeSurfaceRay(scene, samples.position[i], samples.normal[i], options.rayOffset);
+      const SurfaceRay sr = makeSurfaceRay(scene, samples.position[i], samples.normal[i], options.rayOffset, options.hemisphere);
       if (!sr.valid) continue;
       const PixelShift shift = HemisphereSampler::pixelShift(i, options.seed);
       for (int s = 0; s < options.samples; ++s) {

@@ -9,6 +9,8 @@
 // distance (rtcIntersect1). Samples are stratified (HemisphereSampler) and decorrelated per pixel,
 // and rays start from robust origins (SurfaceRay). Results depend on (samples, seed) only, never
 // on the thread count. Pixels of props that receive no AO (SurfaceSamples::receives) get 0.
+// The hemisphere and the cosine are the hit facet's (Hemisphere::Geometric, default) or the
+// G-buffer's shading normal's (Hemisphere::Shading); see SurfaceRay.h.
 //
 // With quantity Transfer it estimates 1 - W instead, W the ambient transfer function of seed 003,
 // eq. 6, per colour c on the same rays: with the fuzzy membership mu = 1 - k(d) (1 for a ray that
@@ -21,6 +23,7 @@
 
 #include "core/AOScene.h"
 #include "reference/EmbreeScene.h"
+#include "reference/SurfaceRay.h"
 #include "reference/SurfaceSamples.h"
 
 namespace aokit {
@@ -33,6 +36,7 @@ struct ReferenceOptions {
   int threads = 0;                    //!< worker threads; 0 = hardware concurrency
   float rayOffset = 0.0f;             //!< origin offset in world units; 0 = defaultRayOffset()
   AOQuantity quantity = AOQuantity::Occlusion;  //!< occlusion A, or 1 - W (ambient transfer)
+  Hemisphere hemisphere = Hemisphere::Geometric;  //!< around the hit facet's normal, or the shading normal
   std::function<void(double)> progress;  //!< fraction done, on the calling thread; throw to cancel
 };
 

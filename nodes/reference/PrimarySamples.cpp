@@ -8,7 +8,8 @@
 
 namespace aokit {
 
-SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera, int width, int height) {
+SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera, int width, int height,
+                                  PrimaryNormal normal) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("castPrimarySamples: image size must be positive");
   const glm::dvec3 forward = glm::normalize(camera.focalPoint - camera.position);
   const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.viewUp));
@@ -34,7 +35,7 @@ SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera
       if (glm::dot(ng, dir) > 0.0f) ng = -ng;
       glm::vec3 n = ng;
       const TriangleMesh& mesh = *inst.mesh;
-      if (mesh.normals.size() == mesh.positions.size()) {
+      if (normal == PrimaryNormal::Shading && mesh.normals.size() == mesh.positions.size()) {
         const glm::uvec3 t = mesh.triangles[rh.hit.primID];
         const float u = rh.hit.u, v = rh.hit.v;
         const glm::dvec3 local((1.0f - u - v) * mesh.normals[t.x] + u * mesh.normals[t.y] + v * mesh.normals[t.z]);

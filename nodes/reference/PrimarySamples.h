@@ -6,10 +6,17 @@
 
 namespace aokit {
 
+// Which normal a primary hit reports.
+enum class PrimaryNormal {
+  Shading,   //!< like a rasterizer: the interpolated vertex normal where the mesh has normals
+  Geometric  //!< the hit triangle's own normal: an oracle that shares nothing with the G-buffer
+};
+
 // One primary ray through each pixel centre of a width x height pinhole image (VTK conventions:
-// vertical view angle, bottom row first). Hit pixels get the world hit point and, like a
-// rasterizer, the interpolated vertex normal when the mesh has normals (else the facet normal),
-// turned to face the camera. Throws std::invalid_argument on a non-positive size.
-SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera, int width, int height);
+// vertical view angle, bottom row first). Hit pixels get the world hit point and the chosen normal
+// (the facet normal where the mesh has no normals), turned to face the camera. Throws
+// std::invalid_argument on a non-positive size.
+SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera, int width, int height,
+                                  PrimaryNormal normal = PrimaryNormal::Shading);
 
 }  // namespace aokit

@@ -30,7 +30,8 @@ float defaultRayOffset(const EmbreeScene& scene, const glm::vec3& p) {
   return static_cast<float>(1e-4 * scene.extent()) + 64.0f * FLT_EPSILON * std::max(maxAbs, 1e-3f);
 }
 
-SurfaceRay makeSurfaceRay(const EmbreeScene& scene, const glm::vec3& p, const glm::vec3& nIn, float offset) {
+SurfaceRay makeSurfaceRay(const EmbreeScene& scene, const glm::vec3& p, const glm::vec3& nIn, float offset,
+                          Hemisphere hemisphere) {
   SurfaceRay r;
   const float len = glm::length(nIn);
   if (!finite(p) || !(len > 0.0f) || !std::isfinite(len)) return r;
@@ -46,18 +47,32 @@ SurfaceRay makeSurfaceRay(const EmbreeScene& scene, const glm::vec3& p, const gl
   RTCRayHit probe = makeRayHit(p + reach * r.normal, -r.normal, 0.0f, 2.0f * reach);
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  rtcIntersect1(scene.scene(), &ctx, &probe);
-  if (probe.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+  // The geometric hemisphere needs p's own facet whatever its angle to n (62 degrees at a box's
+  // corner with shared vertices): the probe line passes through p, so p's facet is the one met
+  // at t = reach; one met before it, in a concave corner, is a neighbour to step over.
+  const bool geometric = hemisphere == Hemisphere::Geometric;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    rtcIntersect1(scene.scene(), &ctx, &probe);
+    if (probe.hit.geomID == RTC_INVALID_GEOMETRY_ID) break;
     glm::vec3 ng(probe.hit.Ng_x, probe.hit.Ng_y, probe.hit.Ng_z);
     const float nl = glm::length(ng);
-    if (nl > 0.0f && std::isfinite(nl)) {
-      ng /= nl;
-      if (glm::dot(ng, r.normal) < 0.0f) ng = -ng;
-      // A facet almost parallel to n is not the surface under p (the probe grazed a neighbour).
-      if (glm::dot(ng, r.normal) > 0.5f) r.geometricNormal = ng;
+    if (!(nl > 0.0f) || !std::isfinite(nl)) break;
+    ng /= nl;
+    if (glm::dot(ng, r.normal) < 0.0f) ng = -ng;
+    const bool throughP = std::abs(probe.ray.tfar - reach) <= offset;
+    if (geometric && !throughP && probe.ray.tfar < reach) {  // a neighbour in front of p: step past it
+      probe = makeRayHit(p + reach * r.normal, -r.normal, probe.ray.tfar + 0.25f * offset, 2.0f * reach);
+      continue;
     }
+    // A facet almost parallel to n is not the surface under p (the probe grazed a neighbour).
+    if (glm::dot(ng, r.normal) > 0.5f || (geometric && throughP)) r.geometricNormal = ng;
+    break;
   }
   r.origin = p + offset * r.geometricNormal;
+  if (hemisphere == Hemisphere::Geometric) {
+    r.normal = r.geometricNormal;
+    basis(r.normal, r.tangent, r.bitangent);
+  }
   return r;
 }
 

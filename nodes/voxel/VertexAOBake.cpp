@@ -30,6 +30,7 @@ ReferenceOptions referenceOptions(const VertexBakeOptions& o) {
   r.falloff = o.falloff;
   r.seed = o.seed;
   r.threads = o.threads;
+  r.hemisphere = Hemisphere::Shading;  // a vertex has no one facet: its own normal's hemisphere
   return r;
 }
 
@@ -122,7 +123,7 @@ std::vector<float> fitOverSurface(const EmbreeScene& occluders, const TriangleMe
 }  // namespace
 
 bool insideOccluder(const EmbreeScene& occluders, const glm::vec3& p, const glm::vec3& n, int rays, std::uint64_t key) {
-  const SurfaceRay sr = makeSurfaceRay(occluders, p, n, 0.0f);
+  const SurfaceRay sr = makeSurfaceRay(occluders, p, n, 0.0f, Hemisphere::Shading);
   if (!sr.valid || rays < 1) return false;
   const HemisphereSampler sampler(rays);
   const PixelShift shift = HemisphereSampler::pixelShift(key, 0x5eedu);
