@@ -10,5 +10,8 @@ void addDemoCommand(CLI::App& app);
 void addReferenceCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addBakeCommand(CLI::App& app);
+void addViewCommand(CLI::App& app);
+// `aokit view ARGS`: runs aokit-view with ARGS (returns only when it cannot).
+int runView(int argc, char** argv);
 
 }  // namespace aokit::cli

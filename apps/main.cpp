@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
   aokit::cli::addBenchCommand(app);
   aokit::cli::addDemoCommand(app);
   aokit::cli::addBakeCommand(app);
+  aokit::cli::addViewCommand(app);
+  if (argc > 1 && std::string(argv[1]) == "view") return aokit::cli::runView(argc - 2, argv + 2);
   aokit::installInterruptHandler();
   aokit::routeVtkMessagesToErrors();  // VTK's own error text joins aokit's one line instead of printing
   if (argc > 1 && argv[1][0] != '-') {

@@ -168,7 +168,9 @@ void PropMeshes::meshesOf(vtkProp* prop, const glm::dmat4& world, bool part, std
   if (actor && !actor->HasOpaqueGeometry()) return;  // AO comes from opaque geometry (translucent props draw after it)
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
   if (!mapper) {
-    if (prop->GetNumberOfPaths() > 0 && !actor) warnOnce(prop, "it draws no vtkMapper's polygons (volumes and images do not cast)");
+    // 2D props (text, scalar bars) are overlays, not geometry: nothing to say about them.
+    if (prop->GetNumberOfPaths() > 0 && !actor && vtkProp3D::SafeDownCast(prop))
+      warnOnce(prop, "it draws no vtkMapper's polygons (volumes and images do not cast)");
     return;
   }
   mapper->Update();

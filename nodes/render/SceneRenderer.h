@@ -59,7 +59,7 @@ class SceneRenderer {
   void applyMaterial(vtkActor* actor, const Geometry& g) const;
   void syncTechnique();
 
-  vtkRenderer* renderer_;
+  vtkSmartPointer<vtkRenderer> renderer_;  // kept alive: the destructor removes its actors from it
   AOScenePtr root_;
   ShadingMode mode_ = ShadingMode::Lit;
   bool applyTechnique_ = true;
