@@ -5,7 +5,7 @@ packages=(
   build-essential cmake pkg-config
   libvtk9-dev libglm-dev libosmesa6-dev libopenmesh-dev libembree-dev
   libgtest-dev googletest nlohmann-json3-dev libcli11-dev
-  zlib1g-dev xvfb xauth
+  zlib1g-dev libx11-dev xvfb xauth
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -132,6 +132,8 @@ TEST(DropinView, KeysMouseAndTheReferencePane) {
       "keys");
   ASSERT_EQ(r.code, 0) << r.err;
   ASSERT_EQ(r.shots.size(), 6u) << r.err;
+  // The labels are 2D overlays: no family may call them casters that cast nothing.
+  EXPECT_EQ(r.err.find("casts no AO"), std::string::npos) << r.err;
   const Shot lit = load(r.shots[0]), obscurance = load(r.shots[1]), hybrid = load(r.shots[2]),
              narrow = load(r.shots[3]), turned = load(r.shots[4]), litAgain = load(r.shots[5]);
 
