@@ -10,6 +10,11 @@
   vec3 aokitToEye = aokitParallel != 0 ? vec3(0.0, 0.0, 1.0) : -vertexVC.xyz;
   aokitFacet *= dot(aokitFacet, aokitToEye) < 0.0 ? -1.0 : 1.0;
   aokitNormal *= dot(aokitNormal, aokitFacet) < 0.0 ? -1.0 : 1.0;
+#if AOKIT_GBUFFER_FACET
+  // The hemisphere of the surface itself (the reference's): across a sharp edge with shared
+  // vertices the shading normal leans up to 60 degrees off the face and reaches into it.
+  if (dot(aokitFacet, aokitFacet) > 0.0) aokitNormal = normalize(aokitFacet);
+#endif
   // Lines and points have no facet (a derivative vanishes, or both run along the line): they are
   // drawn, with their depth, but are no surface: written as background in the other targets, they
   // neither cast nor receive AO.

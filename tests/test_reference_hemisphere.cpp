@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "core/Geometry.h"
+#include "core/Transform.h"
+#include <glm/gtc/matrix_transform.hpp>
 #include "reference/AOReference.h"
 #include "reference/EmbreeScene.h"
 #include "reference/Metrics.h"
@@ -131,4 +133,47 @@ TEST(ReferenceHemisphere, OpenBoxFollowsItsFaces) {
   ASSERT_GT(c.inside, 50u) << "the camera must see into the box";
   EXPECT_LT(c.rmseGeometric, 0.01);
   EXPECT_LT(c.insideGeometric, 0.01);
+}
+
+namespace {
+// Of the pixels off the floor where the G-buffer and a primary ray see the same point, the
+// fraction whose G-buffer normal is within 0.5 degrees of the hit triangle's own.
+double facetAgreement(Scene scene, int w, int h, bool facetNormals) {
+  SceneView view(scene, w, h);
+  const SurfaceSamples g = captureSurfaces(view.window, view.renderer, facetNormals);
+  EmbreeScene embree(*scene.root);
+  const SurfaceSamples p = castPrimarySamples(embree, scene.camera, w, h, PrimaryNormal::Geometric);
+  std::size_t same = 0, agree = 0;
+  for (std::size_t i = 0; i < g.pixelCount(); ++i) {
+    if (!g.covered[i] || !p.covered[i]) continue;
+    if (glm::distance(g.position[i], p.position[i]) > 1e-3 * glm::distance(glm::dvec3(p.position[i]), scene.camera.position))
+      continue;
+    if (p.position[i].z < 1e-4f) continue;  // the floor: flat, both normals agree anyway
+    ++same;
+    agree += glm::dot(glm::normalize(g.normal[i]), p.normal[i]) > std::cos(glm::radians(0.5f));
+  }
+  EXPECT_GT(same, 5000u);
+  return same ? static_cast<double>(agree) / same : 0.0;
+}
+}  // namespace
+
+// The methods' `normal=facet`: the G-buffer then carries each triangle's own normal, turned to
+// the eye, as the reference's hemisphere has it (checked against primary rays, not the G-buffer).
+TEST(ReferenceHemisphere, FacetNormalsInTheGBufferAreTheTrianglesOwn) {
+  Scene sphere;
+  sphere.root->addChild(std::make_shared<Geometry>(makeGridPlane(8.0, 8.0, 8, 8), glm::vec3(1.0f)));
+  auto coarse = std::make_shared<Transform>();
+  coarse->setMatrix(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 1.2)));
+  coarse->addChild(std::make_shared<Geometry>(makeUVSphere(1.0, 12, 6), glm::vec3(1.0f)));
+  sphere.root->addChild(coarse);
+  sphere.camera.position = {0.0, -6.5, 4.0};
+  sphere.camera.focalPoint = {0.0, 0.0, 0.7};
+  for (auto [what, scene] : {std::pair<const char*, Scene>{"shared-vertex box", sharedVertexBoxScene()},
+                             std::pair<const char*, Scene>{"coarse sphere", sphere}}) {
+    const double facet = facetAgreement(scene, 256, 192, true), shading = facetAgreement(scene, 256, 192, false);
+    std::printf("%s: G-buffer normals within 0.5 degrees of the hit triangle's: %.4f (normal=facet), %.4f (shading)\n",
+                what, facet, shading);
+    EXPECT_GT(facet, 0.995) << what;
+    EXPECT_LT(shading, 0.9) << what << ": the shading normals should lean off the facets here";
+  }
 }

@@ -35,9 +35,10 @@ class PassSwap {
 
 }  // namespace
 
-SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene) {
+SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene, bool facetNormals) {
   if (!scene.scene()) throw std::logic_error("captureSurfaces: no scene");
   vtkNew<GBufferPass> gbuffer;
+  gbuffer->SetFacetNormals(facetNormals);
   std::vector<float> posVC, nrmVC;
   std::vector<std::uint8_t> flags;
   vtkRenderer* renderer = window.renderer();

@@ -11,8 +11,9 @@ class SceneRenderer;
 
 // Renders the scene through a full-layout GBufferPass put in the renderer's pass for one frame (the
 // technique stays attached, its pass and GPU state kept) and converts positions and normals from
-// view to world space in double precision; receives comes from the G-buffer's flags.
-SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene);
+// view to world space in double precision; receives comes from the G-buffer's flags. facetNormals:
+// the G-buffer writes each facet's own normal (the methods' `normal=facet`), not VTK's shading normal.
+SurfaceSamples captureSurfaces(OffscreenWindow& window, SceneRenderer& scene, bool facetNormals = false);
 
 // Renders a frame with the scene's technique, as it is shaded (capture must not change what the
 // method sees), and returns its AO in [0,1] (occlusion, or 1 - W for a transfer method) from the

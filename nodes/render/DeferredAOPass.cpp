@@ -191,6 +191,7 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   gbuffer->SetGuardBand(Frame.config.guard);
   gbuffer->SetInstanceIds(Frame.config.instanceIds);
   gbuffer->SetBakedAO(Frame.config.bakedAO);
+  gbuffer->SetFacetNormals(Frame.config.facetNormals);
   const bool multiply = Multisampled(r, Frame.config);
   Timer.begin();
   const char* failed = Ready(plan, multiply);

@@ -65,6 +65,7 @@ DeferredConfig makeDeferredConfig(const DeferredSettings& s, const FrameContext&
   c.radius = frame.radius;
   c.upsample = s.upsample;
   c.view = s.view;
+  c.facetNormals = s.normal == AONormal::Facet;
   return c;
 }
 

@@ -26,6 +26,7 @@ struct DeferredConfig {
   double radius = 1.0;       // the AO radius R (world units): position kernel, depth debug view
   UpsampleSettings upsample;
   DebugView view = DebugView::Off;  // Off, AO, Normals and Depth are the combine's; others the family's overlay
+  bool facetNormals = false;  // the G-buffer's normal is the facet's (GBufferPass::SetFacetNormals)
 };
 
 // The configuration a family's common settings give (downsample, upsampling, view, R).

@@ -57,6 +57,8 @@ Schema<DeferredSettings> deferredSchema(const std::string& family, const Deferre
   std::vector<std::pair<std::string, DebugView>> views;
   for (DebugView v : offer.views) views.emplace_back(debugViewName(v), v);
   t.choice("view", &S::view, views, "debug view");
+  t.choice("normal", &S::normal, {{"shading", AONormal::Shading}, {"facet", AONormal::Facet}},
+           "the hemisphere's normal: VTK's shading normal, or the facet's own (as the reference's)");
   return t;
 }
 

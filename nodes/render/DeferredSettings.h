@@ -26,6 +26,10 @@ enum class DebugView {
   Voxels,   // hybrid: the voxel grid seen from the camera
 };
 
+// Which normal the AO's hemisphere is built around: the one VTK shades with (interpolated vertex
+// normals), or the facet's own (from the derivatives of the surface position), as the reference.
+enum class AONormal { Shading, Facet };
+
 struct UpsampleSettings {
   int window = 0;                //!< key "window": 0 = bilinear taps; else the joint bilateral filter over m x m
   double depthTolerance = 0.03;  //!< key "tolerance": bilinear taps (and obscurance's filter) within it
@@ -40,6 +44,7 @@ struct DeferredSettings {
   AOScale scale = AOScale::Half;   //!< key "scale"
   UpsampleSettings upsample;
   DebugView view = DebugView::Off;  //!< key "view"
+  AONormal normal = AONormal::Shading;  //!< key "normal"
 };
 
 // The common struct with other defaults for the AO resolution and upsampling window (a family's

@@ -21,6 +21,7 @@ struct GBufferOptions {
   bool lean = false;         // no position target; the normal packed in RGB10_A2
   bool bakedAO = false;      // the R16F baked-AO target
   bool instanceIds = false;  // the R32F instance-id target
+  bool facetNormals = false; // the normal written is the facet's, not VTK's shading normal
 };
 
 // The colour targets of a configuration in attachment order (colour first), depth not included.

@@ -76,6 +76,12 @@ void GBufferPass::SetInstanceIds(bool on) {
   DropTargets();
 }
 
+void GBufferPass::SetFacetNormals(bool on) {
+  if (on == Options.facetNormals) return;
+  Options.facetNormals = on;
+  DropTargets();  // the layout is the same; the shaders change with LayoutTime
+}
+
 void GBufferPass::SetGuardBand(double fraction) {
   if (!(fraction >= 0.0 && fraction <= 1.0)) {
     vtkErrorMacro("guard band must be in 0..1, got " << fraction);
@@ -305,7 +311,8 @@ bool GBufferPass::PostReplaceShaderValues(std::string& vs, std::string& gs, std:
     vtkShaderProgram::Substitute(code, "@IDS@", std::to_string(Attachments() - 1), true);
     vtkShaderProgram::Substitute(code, "@BAKED@", std::to_string(flags + 1), true);
     impl = std::string("#define AOKIT_GBUFFER_LEAN ") + (Options.lean ? "1" : "0") + "\n#define AOKIT_GBUFFER_IDS " +
-           (Options.instanceIds ? "1" : "0") + "\n#define AOKIT_GBUFFER_BAKED " + (Options.bakedAO ? "1" : "0") +
+           (Options.instanceIds ? "1" : "0") + "\n#define AOKIT_GBUFFER_FACET " + (Options.facetNormals ? "1" : "0") +
+           "\n#define AOKIT_GBUFFER_BAKED " + (Options.bakedAO ? "1" : "0") +
            "\n#define AOKIT_GBUFFER_BAKED_VALUE " + (bakedInput ? "aokitBakedAOVSOutput" : "0.0") + "\n" + code;
   } else {
     // Without the varyings (no lighting, no normals) the surface cannot be described: leave it

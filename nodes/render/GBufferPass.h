@@ -61,6 +61,9 @@ class GBufferPass : public vtkOpenGLRenderPass {
   // Instance-id target (see above); takes effect at the next Render (targets are rebuilt).
   void SetInstanceIds(bool on);
   bool GetInstanceIds() const { return Options.instanceIds; }
+  // Write the facet's own normal instead of VTK's interpolated one; next Render (shaders rebuilt).
+  void SetFacetNormals(bool on);
+  bool GetFacetNormals() const { return Options.facetNormals; }
   // Guard band as a fraction of the viewport size added on each side, 0..1; next Render.
   void SetGuardBand(double fraction);
   double GetGuardBand() const { return Guard; }
