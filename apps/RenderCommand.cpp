@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "Commands.h"
+#include "settings/SettingInfo.h"
 #include "Options.h"
 #include "methods/MethodRegistry.h"
 #include "output/AtomicFile.h"
@@ -42,12 +43,18 @@ void runRender(const RenderArgs& a) {
   SceneRenderer& renderer = view.renderer;
   renderer.setShadingMode(a.aoOnly ? ShadingMode::AOOnly : ShadingMode::Lit);
   renderer.sync();
-  window.render();
+  // The G-buffer capture touches the actors (a still view's mean would start again): before the frames.
+  SurfaceSamples surfaces;
+  if (!a.aoFloat.empty()) surfaces = captureSurfaces(window, renderer);
+  // accumulate=N: the still view's N frames, so the image is the converged mean.
+  const SettingMap settings = parseSettings(a.setting);
+  const auto accumulate = settings.find("accumulate");
+  const int frames = accumulate == settings.end() ? 1 : std::stoi(accumulate->second);
+  for (int k = 0; k < frames; ++k) window.render();
   const RGBAImage img = window.readColor();
   AOBuffer ao;
   OutputGroup outputs;  // both files or neither
   if (!a.aoFloat.empty()) {
-    const SurfaceSamples surfaces = captureSurfaces(window, renderer);
     ao = captureAO(window, renderer, surfaces.covered);
     for (std::size_t i = 0; i < ao.ao.size(); ++i)
       if (!ao.covered[i]) ao.ao[i] = -1.0f;  // as in `aokit reference`: -1 = no surface

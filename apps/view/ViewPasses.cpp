@@ -30,6 +30,8 @@ vtkSmartPointer<Pass> deferredPass(const Schema& schema, const std::string& sett
 }  // namespace
 
 PaneAO::PaneAO(const std::string& method, const std::string& setting) : method_(method), setting_(setting) {
+  const SettingMap values = parseSettings(setting);
+  if (auto a = values.find("accumulate"); a != values.end() && method != "vtkssao") accumulate_ = std::stoi(a->second);
   if (method == "obscurance") {
     auto p = deferredPass<ObscurancePass>(obscuranceSchema(), setting);
     deferred_ = p;
@@ -78,5 +80,11 @@ double PaneAO::aoMs() const {
   for (const StageTime& t : deferred_->GetStageTimes()) sum += t.ms;
   return sum;
 }
+
+bool PaneAO::converging() const {
+  return deferred_ && accumulate_ > 1 && deferred_->GetAccumulatedFrames() < accumulate_;
+}
+
+int PaneAO::accumulatedFrames() const { return deferred_ ? deferred_->GetAccumulatedFrames() : 0; }
 
 }  // namespace aokit::view

@@ -32,6 +32,10 @@ class PaneAO {
   // The AO stages' time of the last frame in ms (the deferred passes' GPU timestamps), or < 0
   // where the pass keeps none (vtkssao, none).
   double aoMs() const;
+  // With `accumulate=N`: true while the still view's running mean holds fewer than N frames (the
+  // viewer then draws again, so a resting view converges).
+  bool converging() const;
+  int accumulatedFrames() const;
 
  private:
   std::string method_, setting_;
@@ -39,6 +43,7 @@ class PaneAO {
   DeferredAOPass* deferred_ = nullptr;
   vtkSSAOPass* ssao_ = nullptr;
   double ssaoBiasFraction_ = 0.01;
+  int accumulate_ = 1;
 };
 
 }  // namespace view

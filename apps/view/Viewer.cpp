@@ -251,6 +251,7 @@ std::string Viewer::labelOf(const Pane& p) const {
   text += ", R " + fixed(radius_, 3);
   const double ms = p.ao->aoMs();
   if (ms >= 0.0) text += ", AO " + fixed(ms, 1) + " ms";
+  if (p.ao->accumulatedFrames() > 0) text += ", " + std::to_string(p.ao->accumulatedFrames()) + " frames";
   return text;
 }
 
@@ -330,6 +331,13 @@ void Viewer::tick() {
       lastLabel = std::chrono::steady_clock::now();
       refreshLabels(true);
     }
+  }
+  // A resting view with accumulate=N draws again until each pane's mean holds N frames.
+  bool converging = false;
+  for (auto& p : panes_) converging = converging || (p->ao && p->ao->converging());
+  if (converging) {
+    refreshLabels(false);
+    window_->Render();
   }
   if (script_) {
     try {

@@ -215,7 +215,9 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   state->vtkglDisable(GL_SCISSOR_TEST);
   ActiveTextures gbufferTextures{gbuffer->GetDepthTexture(), gbuffer->GetNormalTexture(), gbuffer->GetColorTexture(),
                                  gbuffer->GetFlagsTexture()};
-  v.result = RenderAO(Frame);
+  const int limit = Accumulate > 0 ? Accumulate : Frame.config.accumulate;
+  Frame.accumulated = v.accumulator.begin(Frame, GetMTime(), limit);
+  v.result = v.accumulator.converged() ? v.accumulator.mean() : v.accumulator.add(Frame, RenderAO(Frame));
   const bool filtering = Frame.config.upsample.window > 0;
   const bool upsampled = v.result && (!filtering || v.upsampler.run(Frame, v.result));
   if (upsampled && filtering) Frame.mark("upsample");

@@ -72,6 +72,15 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   void SetSceneRadius(double r);
   double GetSceneRadius() const { return SceneRadius; }
   void SetSceneFalloff(Falloff f);
+  // Converge while the view rests (render/AOAccumulator.h): the AO becomes the running mean of up
+  // to N still frames, each with new samples; the renderer's next Render() continues the sum, and
+  // any change of camera, props or settings starts it again. 0 (default): the settings' own
+  // `accumulate` (1 = off). Logs an error and keeps the value on N outside 0..256.
+  void SetAccumulate(int n);
+  int GetAccumulate() const { return Accumulate; }
+  // Frames in the mean the last frame of `renderer` showed (default: the renderer drawn last); 0
+  // when accumulation is off or before the first frame.
+  int GetAccumulatedFrames(vtkRenderer* renderer = nullptr) const;
   Falloff GetSceneFalloff() const { return SceneFalloff; }
   // The last frame's resolved context (R, falloff).
   const FrameContext& GetFrameContext() const { return Frame.context; }
@@ -148,6 +157,7 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   DeferredFrame Frame;  // the frame being drawn, or the last
   double SceneRadius = 0.0;
   Falloff SceneFalloff = Falloff::Binary;
+  int Accumulate = 0;
   std::map<vtkRenderer*, std::unique_ptr<View>> Views;
   View* Current = nullptr;  // the renderer drawn last
   std::unique_ptr<AfterOpaque> After;

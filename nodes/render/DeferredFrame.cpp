@@ -66,6 +66,7 @@ DeferredConfig makeDeferredConfig(const DeferredSettings& s, const FrameContext&
   c.upsample = s.upsample;
   c.view = s.view;
   c.facetNormals = s.normal == AONormal::Facet;
+  c.accumulate = s.accumulate;
   return c;
 }
 

@@ -28,6 +28,8 @@ struct DeferredFrame {
   vtkTextureObject* zTarget = nullptr;   // R32F: view z of the texel's pixel, +1 on background
   vtkTextureObject* resultTarget = nullptr;  // as aoTarget, when the plan asked (a last stage's output)
   StageTimer* timer = nullptr;
+  int accumulated = 0;  // frames already in the view's running mean: 0, or k for the k-th still frame
+                        // after a change (families draw new samples for k > 0)
   float clip[3][4] = {};                 // rows 0, 1, 3 of the G-buffer's view -> clip matrix
   float depthToZ[4] = {};                // window depth -> view z (DeferredCommon.glsl)
   float viewToWorld[16] = {};            // column-major, for GLSL mat4

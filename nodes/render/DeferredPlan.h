@@ -27,6 +27,7 @@ struct DeferredConfig {
   UpsampleSettings upsample;
   DebugView view = DebugView::Off;  // Off, AO, Normals and Depth are the combine's; others the family's overlay
   bool facetNormals = false;  // the G-buffer's normal is the facet's (GBufferPass::SetFacetNormals)
+  int accumulate = 1;         // still frames in the running mean (render/AOAccumulator.h); 1 = off
 };
 
 // The configuration a family's common settings give (downsample, upsampling, view, R).

@@ -57,6 +57,9 @@ Schema<DeferredSettings> deferredSchema(const std::string& family, const Deferre
   std::vector<std::pair<std::string, DebugView>> views;
   for (DebugView v : offer.views) views.emplace_back(debugViewName(v), v);
   t.choice("view", &S::view, views, "debug view");
+  t.integer("accumulate", &S::accumulate, 1, 256,
+            "still frames averaged: while camera, props and settings stay, each frame adds new samples to "
+            "the running mean of this many (then the mean stands); any change starts again");
   t.choice("normal", &S::normal, {{"shading", AONormal::Shading}, {"facet", AONormal::Facet}},
            "the hemisphere's normal: VTK's shading normal, or the facet's own (as the reference's)");
   return t;

@@ -45,6 +45,7 @@ struct DeferredSettings {
   UpsampleSettings upsample;
   DebugView view = DebugView::Off;  //!< key "view"
   AONormal normal = AONormal::Shading;  //!< key "normal"
+  int accumulate = 1;                   //!< key "accumulate": still frames in the running mean; 1 = off
 };
 
 // The common struct with other defaults for the AO resolution and upsampling window (a family's

@@ -10,6 +10,7 @@
 #include <vtkTextureObject.h>
 #include <vtkWeakPointer.h>
 
+#include "render/AOAccumulator.h"
 #include "render/DeferredAOPass.h"
 #include "render/DeferredFrame.h"
 #include "render/DeferredUpsampler.h"
@@ -26,6 +27,7 @@ struct DeferredAOPass::View {
   vtkSmartPointer<vtkOpenGLFramebufferObject> framebuffer;
   vtkSmartPointer<vtkTextureObject> aoTarget, zTarget, resultTarget;
   DeferredUpsampler upsampler;
+  AOAccumulator accumulator;
   DeferredFrame frame;
   vtkSmartPointer<vtkRenderPass> opaque;  // multisampled windows: VTK's opaque steps, drawn again
   vtkTextureObject* result = nullptr;  // the family's final AO
@@ -33,13 +35,15 @@ struct DeferredAOPass::View {
 
   std::size_t memoryBytes() const {
     return gbuffer->MemoryBytes() + textureBytes(aoTarget) + textureBytes(zTarget) + textureBytes(resultTarget) +
-           upsampler.memoryBytes();
+           upsampler.memoryBytes() +
+           accumulator.memoryBytes();
   }
   void release(vtkWindow* w) {
     gbuffer->ReleaseGraphicsResources(w);
     if (opaque) opaque->ReleaseGraphicsResources(w);
     opaque = nullptr;
     upsampler.release(w);
+    accumulator.release(w);
     aoTarget = zTarget = resultTarget = nullptr;
     framebuffer = nullptr;
     result = nullptr;

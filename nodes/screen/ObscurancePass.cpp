@@ -1,5 +1,8 @@
 #include "screen/ObscurancePass.h"
 
+#include <cmath>
+#include <vector>
+
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkShaderProgram.h>
@@ -50,7 +53,17 @@ vtkTextureObject* ObscurancePass::RenderAO(DeferredFrame& f) {
   vtkShaderProgram* p = ObscuranceStage->use(f.renWin);
   if (!p) return nullptr;
   f.bindCommon(p);
-  p->SetUniform3fv("obsOffsets", static_cast<int>(Constants.offsets.size()), &Constants.offsets[0].x);
+  if (f.accumulated == 0) {
+    p->SetUniform3fv("obsOffsets", static_cast<int>(Constants.offsets.size()), &Constants.offsets[0].x);
+  } else {
+    // A still frame of a running mean: every set turned about the normal by a golden-ratio step, so
+    // the frames' rays interleave (the sets' distribution is symmetric about the normal).
+    const double turn = 6.283185307179586 * std::fmod(0.6180339887498949 * f.accumulated, 1.0);
+    const float c = static_cast<float>(std::cos(turn)), s = static_cast<float>(std::sin(turn));
+    std::vector<glm::vec3> turned(Constants.offsets);
+    for (glm::vec3& o : turned) o = glm::vec3(c * o.x - s * o.y, s * o.x + c * o.y, o.z);
+    p->SetUniform3fv("obsOffsets", static_cast<int>(turned.size()), &turned[0].x);
+  }
   p->SetUniformf("obsRadius", Constants.radius);
   p->SetUniformf("obsBias", Constants.bias);
   p->SetUniformf("obsThickness", Constants.thickness);

@@ -100,7 +100,9 @@ vtkTextureObject* HybridPass::RenderAO(DeferredFrame& f) {
   p->SetUniformf("haoCosMax", c.cosMax);
   p->SetUniformf("haoNormalOffset", c.normalOffset);
   p->SetUniformf("haoInvCell", c.invJitterCell);
-  p->SetUniformi("haoSeedBits", static_cast<int>(c.jitterSeed));
+  // A still frame of a running mean draws new jitter: the seed mixed with the frame's index.
+  const std::uint32_t seed = f.accumulated == 0 ? c.jitterSeed : c.jitterSeed ^ (0x9E3779B9u * static_cast<std::uint32_t>(f.accumulated));
+  p->SetUniformi("haoSeedBits", static_cast<int>(seed));
   p->SetUniformi("haoDownsample", f.config.downsample);
   const int target[2] = {f.targetWidth, f.targetHeight};
   p->SetUniform2i("haoTargetSize", target);

@@ -257,3 +257,16 @@ TEST(DropinView, VtkFileColouredByItsFirstPointArray) {
   EXPECT_GT(ao.aoAt(0, kContact), 0.2);
   EXPECT_LT(ao.aoAt(0, kOpen), 0.03);
 }
+
+// accumulate=N in the viewer: a resting view keeps drawing until the mean holds N frames, and a
+// drag starts it again.
+TEST(DropinView, ARestingViewConverges) {
+  AOKIT_REQUIRE_DISPLAY();
+  const ViewRun r = runView("sphere-plane --size 400x300 --setting accumulate=8 --play "
+                            "'wait:3000;shot:rested;drag:30,0;shot:moved'", "accumulate");
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(r.shots.size(), 2u);
+  const std::string rested = r.shots[0]["panes"][0]["label"], moved = r.shots[1]["panes"][0]["label"];
+  EXPECT_NE(rested.find(", 8 frames"), std::string::npos) << rested;
+  EXPECT_EQ(moved.find(", 8 frames"), std::string::npos) << moved;
+}
