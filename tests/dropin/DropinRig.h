@@ -101,21 +101,28 @@ inline vtkSmartPointer<vtkActor> actorOf(vtkPolyDataAlgorithm* source) {
 }
 
 // The canonical sphere over a floor: sphere radius 1 centred 1.2 above the floor z = 0, 8 x 8.
+inline vtkSmartPointer<vtkSphereSource> canonicalSphere() {
+  auto s = vtkSmartPointer<vtkSphereSource>::New();
+  s->SetCenter(0, 0, 1.2);
+  s->SetRadius(1.0);
+  s->SetThetaResolution(96);
+  s->SetPhiResolution(48);
+  return s;
+}
+inline vtkSmartPointer<vtkPlaneSource> canonicalFloor() {
+  auto p = vtkSmartPointer<vtkPlaneSource>::New();
+  p->SetOrigin(-4, -4, 0);
+  p->SetPoint1(4, -4, 0);
+  p->SetPoint2(-4, 4, 0);
+  p->SetResolution(32, 32);
+  return p;
+}
+
 struct SphereFloor {
   vtkSmartPointer<vtkActor> sphere, floor;
   explicit SphereFloor(vtkRenderer* renderer) {
-    vtkNew<vtkSphereSource> s;
-    s->SetCenter(0, 0, 1.2);
-    s->SetRadius(1.0);
-    s->SetThetaResolution(96);
-    s->SetPhiResolution(48);
-    vtkNew<vtkPlaneSource> p;
-    p->SetOrigin(-4, -4, 0);
-    p->SetPoint1(4, -4, 0);
-    p->SetPoint2(-4, 4, 0);
-    p->SetResolution(32, 32);
-    sphere = actorOf(s);
-    floor = actorOf(p);
+    sphere = actorOf(canonicalSphere());
+    floor = actorOf(canonicalFloor());
     renderer->AddActor(sphere);
     renderer->AddActor(floor);
     placeCamera(renderer);

@@ -216,19 +216,9 @@ TEST(DropinView, VtkFileColouredByItsFirstPointArray) {
   AOKIT_REQUIRE_DISPLAY();
   const std::string file = std::string(::testing::TempDir()) + "aokit-view-sphere-floor.vtp";
   {
-    vtkNew<vtkSphereSource> sphere;  // the canonical sphere (radius 1 at z 1.2) over an 8 x 8 floor
-    sphere->SetCenter(0, 0, 1.2);
-    sphere->SetRadius(1.0);
-    sphere->SetThetaResolution(96);
-    sphere->SetPhiResolution(48);
-    vtkNew<vtkPlaneSource> floor;
-    floor->SetOrigin(-4, -4, 0);
-    floor->SetPoint1(4, -4, 0);
-    floor->SetPoint2(-4, 4, 0);
-    floor->SetResolution(32, 32);
-    vtkNew<vtkAppendPolyData> both;
-    both->AddInputConnection(sphere->GetOutputPort());
-    both->AddInputConnection(floor->GetOutputPort());
+    vtkNew<vtkAppendPolyData> both;  // the rig's sphere and floor in one file
+    both->AddInputConnection(aokit::dropin::canonicalSphere()->GetOutputPort());
+    both->AddInputConnection(aokit::dropin::canonicalFloor()->GetOutputPort());
     vtkNew<vtkElevationFilter> height;  // the point array "Elevation", 0 at z = 0 to 1 at z = 2.2
     height->SetInputConnection(both->GetOutputPort());
     height->SetLowPoint(0, 0, 0);
