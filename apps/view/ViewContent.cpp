@@ -43,10 +43,13 @@ vtkSmartPointer<vtkPolyData> readSurface(const std::string& path) {
   }
   vtkNew<vtkGeometryFilter> surface;
   surface->SetInputConnection(reader->GetOutputPort());
-  vtkNew<vtkPolyDataNormals> normals;  // VTK's 30-degree split, as the kit's loader does without normals
-  normals->SetInputConnection(surface->GetOutputPort());
+  surface->Update();
+  vtkSmartPointer<vtkPolyData> out = surface->GetOutput();
+  if (out->GetPointData()->GetNormals()) return out;  // a file's own normals are kept, as the kit's loader keeps them
+  vtkNew<vtkPolyDataNormals> normals;  // else VTK's 30-degree split, as the loader's feature normals
+  normals->SetInputData(out);
   normals->Update();
-  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
+  out = normals->GetOutput();
   return out;
 }
 

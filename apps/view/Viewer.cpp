@@ -326,9 +326,8 @@ void Viewer::tick() {
       }
     }
     // Progress: the label only, at most every half second (a frame costs the worker CPU time).
-    static auto lastLabel = std::chrono::steady_clock::now();
-    if (std::chrono::steady_clock::now() - lastLabel > std::chrono::milliseconds(500)) {
-      lastLabel = std::chrono::steady_clock::now();
+    if (std::chrono::steady_clock::now() - labelsAt_ > std::chrono::milliseconds(500)) {
+      labelsAt_ = std::chrono::steady_clock::now();
       refreshLabels(true);
     }
   }

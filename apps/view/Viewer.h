@@ -83,6 +83,7 @@ class Viewer {
   double radius_ = 1.0;
   unsigned long cameraMTime_ = 0;
   std::chrono::steady_clock::time_point cameraMovedAt_;
+  std::chrono::steady_clock::time_point labelsAt_;  // last label refresh while a reference runs
   int exitCode_ = 0;
 };
 
