@@ -8,6 +8,7 @@
 
 #include "core/Scene.h"
 #include "core/FeatureNormals.h"
+#include "scenes/ResolveScene.h"  // resolveScene: the CLI names scenes as every front end does
 #include "io/SceneLimits.h"
 
 namespace aokit::cli {
@@ -36,10 +37,6 @@ struct SceneOptions {
 // CLI11 converts it (which would wrap "-1" into an unsigned seed): "--seed: '-1' is not a whole
 // number in [0, 18446744073709551615]".
 CLI::Validator inRange(const NumberRange& range);
-
-// A built-in scene name, a .json scene file or a mesh file (its normals, when it has none, split
-// at featureAngle degrees) -> Scene.
-Scene resolveScene(const std::string& spec, double featureAngle = kDefaultFeatureAngle);
 
 // The list syntax of --scenes and --methods: items separated by ',' or ';', options repeatable.
 // In a method list an item "key=value" without a method continues the previous item's settings,

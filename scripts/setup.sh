@@ -6,6 +6,7 @@ packages=(
   libvtk9-dev libglm-dev libosmesa6-dev libopenmesh-dev libembree-dev
   libgtest-dev googletest nlohmann-json3-dev libcli11-dev
   zlib1g-dev libx11-dev xvfb xauth
+  python3-vtk9 python3-dev python3-numpy python3-pytest python3-vedo
 )
 missing=()
 for p in "${packages[@]}"; do
