@@ -2,9 +2,11 @@
 
     PYTHONPATH=build/lib/python3.11/dist-packages python3 examples/python/batch_folder.py DIR OUT [WxH]
 
+    python3 -m aokit.headless examples/python/batch_folder.py DIR OUT [WxH]   # no X server: OSMesa
+
 One window and one pass serve every mesh (a new window per mesh would rebuild every program).
-It needs an X server (Xvfb will do); it draws into offscreen buffers. Prints the process's
-resident memory after each mesh.
+Under X (Xvfb will do) it draws into offscreen buffers of an ordinary window; started through
+aokit.headless, into aokit.OffscreenWindow. Prints the process's resident memory after each mesh.
 """
 import os
 import sys
@@ -13,6 +15,7 @@ from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow, vtkWindowToImageFilter
 
 import aokit
+from aokit.offscreen import bound
 
 
 def rss_mb():
@@ -26,12 +29,16 @@ meshes = sorted(f for f in os.listdir(folder) if f.lower().endswith((".off", ".o
 if not meshes:
     sys.exit("batch: no mesh files in " + folder)
 os.makedirs(out, exist_ok=True)
-window = vtkRenderWindow()
-window.SetSize(w, h)
-window.SetOffScreenRendering(1)
-renderer = vtkRenderer()
+if bound():
+    window = aokit.OffscreenWindow(w, h)
+    renderer = window.GetRenderers().GetFirstRenderer()
+else:
+    window = vtkRenderWindow()
+    window.SetSize(w, h)
+    window.SetOffScreenRendering(1)
+    renderer = vtkRenderer()
+    window.AddRenderer(renderer)
 renderer.SetBackground(1, 1, 1)
-window.AddRenderer(renderer)
 ao = aokit.ObscurancePass()
 renderer.SetPass(ao)
 grab = vtkWindowToImageFilter()

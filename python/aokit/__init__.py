@@ -19,9 +19,10 @@ from ._passes import FieldPass, HybridPass, ObscurancePass, methods, new_pass
 from ._props import set_casts_ao, set_receives_ao, set_static, casts_ao, receives_ao, is_static
 from ._arrays import read_ao, reference, metrics
 from ._scene import load_scene, builtin_scenes
+from .offscreen import OffscreenWindow
 
 __all__ = [
     "ObscurancePass", "HybridPass", "FieldPass", "methods", "new_pass",
     "set_casts_ao", "set_receives_ao", "set_static", "casts_ao", "receives_ao", "is_static",
-    "read_ao", "reference", "metrics", "load_scene", "builtin_scenes",
+    "read_ao", "reference", "metrics", "load_scene", "builtin_scenes", "OffscreenWindow",
 ]
