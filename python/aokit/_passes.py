@@ -48,7 +48,15 @@ class _Settings:
         return {key: self.get(key) for key in self._kinds}
 
     def set_scene_radius(self, radius):
-        if not self.SetSceneRadius(float(radius)):
+        self.SetSceneRadius(radius)
+
+    # The wrapped methods that report a bad value by returning False raise instead.
+    def SetSceneRadius(self, radius):
+        if not _vtk.vtkAOKitPass.SetSceneRadius(self, float(radius)):
+            raise ValueError(self.GetLastError())
+
+    def SetSceneFalloff(self, name):
+        if not _vtk.vtkAOKitPass.SetSceneFalloff(self, str(name)):
             raise ValueError(self.GetLastError())
 
 

@@ -73,6 +73,8 @@ def test_values_by_kind_and_keyword_constructor():
     (lambda: aokit.HybridPass().SetRes(100000), "hybrid: res must be"),
     (lambda: aokit.new_pass("ssao"), "unknown AO method 'ssao' (known: obscurance, hybrid, field)"),
     (lambda: aokit.ObscurancePass().set_scene_radius(-1), "obscurance: the scene radius must be"),
+    (lambda: aokit.HybridPass().SetSceneRadius(float("inf")), "hybrid: the scene radius must be"),
+    (lambda: aokit.FieldPass().SetSceneFalloff("gauss"), "unknown falloff"),
     (lambda: aokit.load_scene("no-such-scene", None), "scene: Load needs"),
 ])
 def test_bad_values_raise_value_error_with_the_kits_line(call, message):
