@@ -60,7 +60,7 @@ class _Settings:
             raise ValueError(self.GetLastError())
 
 
-def _accessors(key, kind, doc):
+def _accessors(key, doc):
     def setter(self, value):
         self.set(key, value)
 
@@ -83,7 +83,7 @@ def _family(name, wrapped):
         lines.append("    " + doc)
         kinds[key] = kind
         cap = key[0].upper() + key[1:]
-        members["Set" + cap], members["Get" + cap] = _accessors(key, kind, doc)
+        members["Set" + cap], members["Get" + cap] = _accessors(key, doc)
     members["_kinds"] = kinds
     members["__doc__"] = (wrapped.__doc__ or "") + "\n\nSettings (Set<Key>/Get<Key>, or by keyword):\n" + "\n".join(lines)
     members["__module__"] = __name__.rsplit(".", 1)[0]
