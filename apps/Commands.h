@@ -11,6 +11,7 @@ void addReferenceCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addBakeCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
+void addSettingsCommand(CLI::App& app);
 // `aokit view ARGS`: runs aokit-view with ARGS (returns only when it cannot).
 int runView(int argc, char** argv);
 

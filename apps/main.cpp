@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   aokit::cli::addDemoCommand(app);
   aokit::cli::addBakeCommand(app);
   aokit::cli::addViewCommand(app);
+  aokit::cli::addSettingsCommand(app);
   if (argc > 1 && std::string(argv[1]) == "view") return aokit::cli::runView(argc - 2, argv + 2);
   aokit::installInterruptHandler();
   aokit::routeVtkMessagesToErrors();  // VTK's own error text joins aokit's one line instead of printing

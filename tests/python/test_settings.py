@@ -101,3 +101,20 @@ def test_prop_marks():
     aokit.set_receives_ao(a, False)
     aokit.set_casts_ao(a, True)
     assert aokit.casts_ao(a) and not aokit.receives_ao(a) and aokit.is_static(a)
+
+
+@pytest.mark.parametrize("family", FAMILIES)
+def test_the_cli_json_table_is_the_passes_table(family):
+    # `aokit settings --json` is what the ParaView view's properties are generated from: it must
+    # carry every setting of the family with the value a fresh pass holds.
+    import json
+    from conftest import cli
+    p = family()
+    table = json.loads(subprocess.run([cli(), "settings", p.GetMethod(), "--json"], check=True,
+                                      capture_output=True, text=True, timeout=60).stdout)
+    assert [m["name"] for m in table] == [p.GetMethod()]
+    rows = table[0]["settings"]
+    assert [r["key"] for r in rows] == [p.GetSettingKey(i) for i in range(p.GetNumberOfSettings())]
+    for r in rows:
+        assert r["default"] == p.GetSetting(r["key"]), r["key"]
+        assert r["range_text"] and r["help"]
