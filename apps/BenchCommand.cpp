@@ -25,6 +25,7 @@ struct BenchArgs {
   std::uint64_t seed = 1;
   bool temporal = true;
   bool profile = false;
+  int still = 0;
 };
 
 const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes",  "tank",   "stack",
@@ -56,6 +57,9 @@ void runBenchCommand(const BenchArgs& a) {
   cfg.frames = a.frames;
   cfg.seed = a.seed;
   cfg.profile = a.profile;
+  cfg.stillFrames = a.still;
+  if (a.still != 0 && (a.still < 16 || a.still > 256))
+    throw std::invalid_argument("--still must be 0 (off) or in 16..256, got " + std::to_string(a.still));
   cfg.loadScene = [&](const std::string& name) { return scenes.at(name); };
   checkOutputsInFolder(a.outDir, {"results.csv", "chart.png", "report.md", a.temporal ? "temporal.csv" : ""});
 
@@ -101,6 +105,10 @@ void addBenchCommand(CLI::App& app) {
                   "timed pairs (base frame, method frame) per row, and frames of the temporal run")
       ->capture_default_str()
       ->check(inRange(limits::kFrames));
+  cmd->add_option("--still", args->still,
+                  "still frames per row (16..256; 0: off): RMSE after 4 and 16 frames of accumulate=N, bias (the "
+                  "mean of N frames against the reference) and noise (one frame against that mean)")
+      ->capture_default_str();
   cmd->add_option("--falloff", args->falloff,
                   "falloff for every scene: binary, wendland, sqrt, exponential (default: each scene's)");
   cmd->add_option("--seed", args->seed, "reference seed")->capture_default_str()->check(inRange(limits::kSeed64));

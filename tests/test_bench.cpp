@@ -9,6 +9,7 @@
 #include "bench/Bench.h"
 #include "bench/BenchResult.h"
 #include "bench/PairedTiming.h"
+#include "bench/StillFrames.h"
 #include "core/Geometry.h"
 #include "methods/MethodRegistry.h"
 #include "scenes/BuiltinScenes.h"
@@ -175,5 +176,36 @@ TEST(Bench, ASceneWithNoCoveredPixelsIsAnError) {
 TEST(Bench, ZeroReferenceSamplesIsAnError) {
   BenchConfig cfg = tinyConfig();
   cfg.refSamples = 0;
+  EXPECT_THROW(runBench(cfg), std::invalid_argument);
+}
+
+TEST(Bench, StillSettingSetsAccumulateOnlyWhereAMethodHasIt) {
+  EXPECT_EQ(stillSetting("obscurance", "", 16), "accumulate=16");
+  EXPECT_EQ(stillSetting("obscurance", "samples=8,accumulate=4", 32), "accumulate=32,samples=8");
+  EXPECT_EQ(stillSetting("vtkssao", "kernel=16", 16), "");  // VTK's SSAO does not accumulate
+}
+
+TEST(Bench, StillFramesConvergeTowardsTheBias) {
+  BenchConfig cfg = tinyConfig();
+  cfg.width = 192;
+  cfg.height = 144;
+  cfg.refSamples = 64;
+  cfg.stillFrames = 16;
+  cfg.runs = {{"vtkssao", "kernel=16"}, {"obscurance", "samples=2"}};
+  const BenchOutput out = runBench(cfg);
+  ASSERT_EQ(out.rows.size(), 2u);
+  const BenchRow& ssao = out.rows[0];
+  EXPECT_EQ(ssao.stillFrames, 0);
+  EXPECT_TRUE(std::isnan(ssao.rmseF16) && std::isnan(ssao.stillBias));
+  const BenchRow& ob = out.rows[1];
+  EXPECT_EQ(ob.stillFrames, 16);
+  // New rotations each still frame: the error falls from 1 to 4 to 16 frames, and what is left
+  // after 16 is the bias (here N = 16, the same frame); one frame's noise is real.
+  EXPECT_LT(ob.rmseF4, ob.rmse);
+  EXPECT_LT(ob.rmseF16, ob.rmseF4);
+  EXPECT_DOUBLE_EQ(ob.stillBias, ob.rmseF16);
+  EXPECT_GT(ob.stillNoise, 0.005);
+  EXPECT_LE(ob.stillBias * ob.stillBias, ob.rmse * ob.rmse);
+  cfg.stillFrames = 8;
   EXPECT_THROW(runBench(cfg), std::invalid_argument);
 }

@@ -8,6 +8,7 @@
 
 #include "bench/PairedTiming.h"
 #include "bench/SceneReferences.h"
+#include "bench/StillFrames.h"
 #include "core/Progress.h"
 #include "methods/MethodRegistry.h"
 #include "reference/Falloff.h"
@@ -131,11 +132,20 @@ void benchScene(Scene& scene, const BenchConfig& cfg, const std::vector<std::pai
     row.refSamples = cfg.refSamples;
     row.refStdErr = reference.stdErr;
     row.refNoise = reference.noise;
-    out.rows.push_back(row);
-    if (cfg.onRow) cfg.onRow(row);
     // Detach here, before the next technique is built: one technique's GPU resources at a time.
     scene.root->setTechnique(nullptr);
     view.renderer.sync();
+    if (technique && cfg.stillFrames > 0) {
+      const StillFrameErrors still = measureStillFrames(scene, view.window, view.renderer, method, setting,
+                                                        cfg.stillFrames, surfaces.covered, reference.ao);
+      row.stillFrames = still.frames;
+      row.rmseF4 = still.rmseF4;
+      row.rmseF16 = still.rmseF16;
+      row.stillBias = still.bias;
+      row.stillNoise = still.noise;
+    }
+    out.rows.push_back(row);
+    if (cfg.onRow) cfg.onRow(row);
     progress.update(double(i + 1) / runs.size());
   }
   progress.done();
@@ -147,6 +157,8 @@ BenchOutput runBench(const BenchConfig& cfg) {
   if (!cfg.loadScene) throw std::invalid_argument("bench: no scene loader");
   if (cfg.refSamples < 1) throw std::invalid_argument("reference samples must be at least 1");
   if (cfg.frames < 1 || cfg.warmup < 0) throw std::invalid_argument("bench: needs at least one timed pair");
+  if (cfg.stillFrames != 0 && (cfg.stillFrames < 16 || cfg.stillFrames > 256))
+    throw std::invalid_argument("bench: still frames must be 0 (off) or 16..256, got " + std::to_string(cfg.stillFrames));
   const auto runs = cfg.runs.empty() ? defaultBenchRuns() : cfg.runs;
   for (const auto& r : runs) makeTechnique(r.first, r.second);  // validate every setting up front
   // Every scene (and its meshes) before the first row: a missing mesh fails now, not at scene 7.

@@ -27,6 +27,9 @@ struct BenchConfig {
   // Stage times per row (StageTiming::Finished: glFinish at each stage, so they add up to ao_ms;
   // the stalls add to the frames they are taken in). Off: no stage times, frames as users run them.
   bool profile = false;
+  // Still frames per row (0: off, else at least 16): the method again with accumulate=N on the
+  // still view, its RMSE after 4 and 16 frames, bias and noise (bench/StillFrames.h).
+  int stillFrames = 0;
   bool progress = true;
   std::function<Scene(const std::string&)> loadScene;  // name/spec -> scene
   // Called after each scene with its (occlusion) reference (for `aokit demo` outputs).

@@ -66,6 +66,20 @@ void writeBenchReport(const std::string& path, const std::vector<BenchRow>& rows
             << fmt("%.3f", r->p99) << " | " << fmt("%.3f", r->ssim) << " | "
             << fmt("%.2f", r->memoryBytes / 1048576.0) << " |\n";
     }
+    bool still = false;
+    for (const auto& r : rows) still = still || r.stillFrames > 0;
+    if (still) {
+      out << "\n## Still frames\n\nEach row's method again with accumulate=N on the same still view: RMSE "
+             "after 1, 4, 16 and N frames, bias (the mean of N frames against the reference) and noise (frame 1 "
+             "against that mean, RMS).\n\n| scene | method | setting | N | RMSE 1 | RMSE 4 | RMSE 16 | RMSE N = bias | "
+             "noise |\n|---|---|---|---|---|---|---|---|---|\n";
+      for (const auto& r : rows)
+        if (r.stillFrames > 0)
+          out << "| " << r.scene << " | " << r.method << " | " << (r.setting.empty() ? "-" : r.setting) << " | "
+              << r.stillFrames << " | " << fmt("%.4f", r.rmse) << " | " << fmt("%.4f", r.rmseF4) << " | "
+              << fmt("%.4f", r.rmseF16) << " | " << fmt("%.4f", r.stillBias) << " | " << fmt("%.4f", r.stillNoise)
+              << " |\n";
+    }
     if (!sequence.empty()) {
       out << "\n## Temporal stability (" << sequence.front().scene << ", " << sequence.front().frames << " frames)\n\n"
           << "Mean frame-to-frame change of AO at surface points seen in both frames (found by reprojecting "

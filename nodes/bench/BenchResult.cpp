@@ -13,7 +13,7 @@ const std::vector<std::string>& benchCsvColumns() {
       "scene",    "method",     "setting",  "quantity", "falloff", "width",        "height",
       "base_ms",  "frame_ms",   "ao_ms",    "ao_ms_q1", "ao_ms_q3", "stages",      "prepare_ms",
       "rmse",     "mae",        "p99",      "ssim",     "memory_bytes", "pixels",  "ref_samples",
-      "ref_stderr", "ref_noise"};
+      "ref_stderr", "ref_noise", "still_frames", "rmse_f4", "rmse_f16", "bias", "noise"};
   return cols;
 }
 
@@ -40,7 +40,9 @@ std::string benchCsvLine(const BenchRow& r) {
          fmt("%.3f", r.aoQ3Ms) + ',' + csvField(r.stages) + ',' + fmt("%.1f", r.prepareMs) + ',' +
          fmt("%.5f", r.rmse) + ',' + fmt("%.5f", r.mae) + ',' + fmt("%.5f", r.p99) + ',' + fmt("%.5f", r.ssim) + ',' +
          std::to_string(r.memoryBytes) + ',' + std::to_string(r.pixels) + ',' + std::to_string(r.refSamples) + ',' +
-         fmt("%.5f", r.refStdErr) + ',' + fmt("%.5f", r.refNoise);
+         fmt("%.5f", r.refStdErr) + ',' + fmt("%.5f", r.refNoise) + ',' + std::to_string(r.stillFrames) + ',' +
+         fmt("%.5f", r.rmseF4) + ',' + fmt("%.5f", r.rmseF16) + ',' + fmt("%.5f", r.stillBias) + ',' +
+         fmt("%.5f", r.stillNoise);
 }
 
 namespace {

@@ -3,6 +3,7 @@
 // quantity it estimates; and the per-scene reference summary.
 #include <cstddef>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ struct BenchRow {
   int refSamples = 0;        // reference rays per pixel
   double refStdErr = 0;      // RMS of the reference's own per-pixel standard error (formula)
   double refNoise = 0;       // measured: RMS difference of two references with different seeds / sqrt 2
+  // Still frames (bench --still N; bench/StillFrames.h): NaN when not measured.
+  int stillFrames = 0;
+  double rmseF4 = std::numeric_limits<double>::quiet_NaN(), rmseF16 = std::numeric_limits<double>::quiet_NaN();
+  double stillBias = std::numeric_limits<double>::quiet_NaN(), stillNoise = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct ReferenceSummary {
