@@ -77,3 +77,40 @@ def test_add_ao_needs_a_plotter_with_renderers():
         renderers = []
     with pytest.raises(ValueError, match="no renderers"):
         aokit.vedo.add_ao(Empty())
+
+
+def test_a_volume_is_drawn_over_the_ao_and_casts_nothing(window):
+    # A vedo Volume floating over the background (nothing opaque behind it), beside the sphere on
+    # its floor: with the pass it looks as without it, and the AO is the AO without the volume.
+    def render(with_volume, with_ao):
+        plt = vedo.Plotter(offscreen=True, size=(400, 300), bg="black")
+        shown = list(objects())
+        if with_volume:
+            x, y, z = np.mgrid[-1:1:24j, -1:1:24j, -1:1:24j]
+            blob = (255 * np.exp(-3.0 * (x * x + y * y + z * z))).astype(np.uint8)
+            shown.append(vedo.Volume(blob, spacing=(0.025, 0.025, 0.025), origin=(-0.9, 0.0, 0.6)))
+        plt.show(*shown, interactive=False)
+        camera(plt)
+        passes = aokit.vedo.add_ao(plt, radius=0.6) if with_ao else []
+        plt.render()
+        image = plt.screenshot(asarray=True).astype(np.int16)
+        ao = aokit.read_ao(passes[0]) if passes else None
+        plt.close()
+        return image, ao
+
+    plain, _ = render(with_volume=False, with_ao=False)
+    vol_plain, _ = render(with_volume=True, with_ao=False)
+    vol_ao, ao_with = render(with_volume=True, with_ao=True)
+    _, ao_without = render(with_volume=False, with_ao=True)
+    volume = np.abs(vol_plain - plain).max(axis=2) > 10  # where the volume shows
+    assert volume.sum() > 200
+    assert (plain[volume] == 0).all()  # ... over the black background only
+    assert np.abs(vol_ao[volume] - vol_plain[volume]).max() <= 2  # drawn as without the pass
+    assert np.array_equal(ao_with >= 0, ao_without >= 0)
+    # The volume casts no AO; it only moves the near and far planes VTK fits to the visible
+    # bounds, so a few containment tests flip at depth precision.
+    diff = np.abs(ao_with - ao_without)[ao_without >= 0]
+    print("volume: AO differs on %d of %d px, max %.4f, RMS %.6f" % ((diff > 0).sum(), diff.size, diff.max(),
+                                                                     np.sqrt(np.mean(diff ** 2))))
+    assert np.sqrt(np.mean(diff ** 2)) <= 0.001 and (diff > 0.02).sum() == 0
+    assert ao_with.max() > 0.3
