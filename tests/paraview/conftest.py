@@ -1,7 +1,7 @@
 """The plugin's suite runs on the X server CTest starts (AOKIT_XVFB_DISPLAY_FILE), or on DISPLAY:
 pvbatch needs one even offscreen."""
-import contextlib
 import os
+import sys
 
 import pytest
 
@@ -17,17 +17,8 @@ def cli():
     return path
 
 
-@contextlib.contextmanager
 def window_pair():
-    """A 512x384 Debian-VTK window (offscreen buffers) with one renderer."""
-    from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow
-    if not os.environ.get("DISPLAY"):
-        pytest.skip("no X display (run through ctest, which starts Xvfb)")
-    renderer, win = vtkRenderer(), vtkRenderWindow()
-    win.AddRenderer(renderer)
-    win.SetSize(512, 384)
-    win.SetOffScreenRendering(1)
-    try:
-        yield win, renderer
-    finally:
-        win.Finalize()
+    """A 512x384 Debian-VTK window with one renderer (tests/python/vtk_window.py)."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+    from vtk_window import offscreen_window
+    return offscreen_window()

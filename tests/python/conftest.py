@@ -11,16 +11,9 @@ if _display_file and os.path.exists(_display_file):
 @pytest.fixture
 def window():
     """A 512x384 on-screen VTK window (offscreen buffers) with one renderer."""
-    from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow
-    if not os.environ.get("DISPLAY"):
-        pytest.skip("no X display (run through ctest, which starts Xvfb)")
-    renderer, win = vtkRenderer(), vtkRenderWindow()
-    win.AddRenderer(renderer)
-    win.SetSize(512, 384)
-    win.SetOffScreenRendering(1)
-    yield win, renderer
-    renderer.SetPass(None)
-    win.Finalize()
+    from vtk_window import offscreen_window
+    with offscreen_window() as pair:
+        yield pair
 
 
 def cli():
