@@ -154,7 +154,12 @@ void vtkAOKitRenderView::WriteAO() {
     return;
   }
   const std::vector<float> values(ao->GetPointer(0), ao->GetPointer(0) + ao->GetNumberOfValues());
-  const std::string tmp = Impl->outputFile + ".part";
+  // Under MPI each rank holds the AO of its own pixels before compositing: one file per rank.
+  vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
+  const std::string path = (c && c->GetNumberOfProcesses() > 1)
+                               ? Impl->outputFile + ".rank" + std::to_string(c->GetLocalProcessId())
+                               : Impl->outputFile;
+  const std::string tmp = path + ".part";
   try {
     aokit::writeFloatImage(tmp, size[0], size[1], values);
   } catch (const std::exception& e) {
@@ -162,9 +167,9 @@ void vtkAOKitRenderView::WriteAO() {
     reportError(std::string("AOOutputFile: ") + e.what());
     return;
   }
-  if (std::rename(tmp.c_str(), Impl->outputFile.c_str()) != 0) {
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
-    reportError("AOOutputFile: cannot write " + Impl->outputFile);
+    reportError("AOOutputFile: cannot write " + path);
   }
 }
 
