@@ -83,6 +83,17 @@ TEST(SettingsSchema, DefaultsComeFromTheStruct) {
   EXPECT_NO_THROW(toySchema().validate(Toy{}));
 }
 
+TEST(SettingsSchema, AnEmptyTextDefaultReadsEmptyAndTheWordGivesItBack) {
+  // field's cacheDir defaults to "" (the user's cache); help prints it "empty", and that word,
+  // copied from the help, must not become a folder named "empty".
+  const auto infos = fieldSchema().infos();
+  const auto it = std::find_if(infos.begin(), infos.end(), [](const SettingInfo& i) { return i.key == "cacheDir"; });
+  ASSERT_NE(it, infos.end());
+  EXPECT_EQ(it->defaultText, "empty");
+  EXPECT_EQ(fieldSchema().parse({{"cacheDir", "empty"}}).cacheDirectory, "");
+  EXPECT_EQ(fieldSchema().parse({{"cacheDir", "/tmp/x"}}).cacheDirectory, "/tmp/x");
+}
+
 TEST(SettingsSchema, ParsesEveryKindFromText) {
   const Toy t = toySchema().parse({{"count", "8"}, {"size", "2.5"}, {"level", "auto"}, {"on", "off"},
                                    {"colour", "red"}, {"name", "cup"}, {"weight", "1"}, {"lo", "0"}});

@@ -163,14 +163,15 @@ class Schema {
     return *this;
   }
 
-  // A string member, any text without ',' (a folder, a file).
+  // A string member, any text without ',' (a folder, a file). The word "empty" stands for the
+  // empty text, as help and listings print an empty default.
   template <class A>
   Schema& text(std::string key, A member, std::string help) {
     SettingInfo i = info(std::move(key), SettingKind::Text, std::move(help));
     const auto at = access(member);
     add(std::move(i), [at](const S& s) { return std::string(at(s)); },
         [at](S& s, const std::string& t, const SettingInfo&) {
-          at(s) = t;
+          at(s) = t == "empty" ? std::string() : t;
           return true;
         },
         [](const S&, const SettingInfo&) { return true; });
