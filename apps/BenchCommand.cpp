@@ -6,6 +6,7 @@
 #include "Options.h"
 #include "bench/Bench.h"
 #include "bench/ErrorTimeChart.h"
+#include "bench/ScalingBench.h"
 #include "bench/SequenceBench.h"
 #include "methods/MethodRegistry.h"
 #include "output/AtomicFile.h"
@@ -26,13 +27,41 @@ struct BenchArgs {
   bool temporal = true;
   bool profile = false;
   int still = 0;
+  bool scaling = false;
 };
 
 const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes",  "tank",   "stack",
                                                  "corridor",     "room",             "open-box", "bunny", "fandisk",
                                                  "hidden",       "behind"};
 
+// `--scaling`: its own scenes and sizes, the curve points of defaultScalingRuns() unless --methods.
+void runScalingCommand(const BenchArgs& a) {
+  ScalingConfig cfg;
+  cfg.runs = parseRuns(a.methodsArg);
+  cfg.refSamples = a.samples;
+  cfg.frames = a.frames;
+  cfg.seed = a.seed;
+  for (const auto& r : cfg.runs) makeTechnique(r.first, r.second);
+  checkOutputsInFolder(a.outDir, {"scaling.csv", "scaling.png"});
+  ensureDirectory(a.outDir);
+  const std::string csvPath = a.outDir + "/scaling.csv";
+  std::vector<ScalingRow> rows;
+  cfg.onRow = [&](const ScalingRow& r) {  // rewritten whole after each row: never a half-written file
+    rows.push_back(r);
+    writeStreamAtomically(csvPath, [&](std::ostream& out) {
+      const auto& cols = scalingCsvColumns();
+      for (std::size_t i = 0; i < cols.size(); ++i) out << (i ? "," : "") << cols[i];
+      out << '\n';
+      for (const auto& row : rows) out << scalingCsvLine(row) << '\n';
+    });
+  };
+  runScalingBench(cfg);
+  writeScalingChart(a.outDir + "/scaling.png", rows);
+  std::printf("%s, %s/scaling.png (%zu rows)\n", csvPath.c_str(), a.outDir.c_str(), rows.size());
+}
+
 void runBenchCommand(const BenchArgs& a) {
+  if (a.scaling) return runScalingCommand(a);
   // Everything is checked before the output folder exists: a refused run leaves nothing behind.
   SceneOptions sizeOnly;
   sizeOnly.size = a.size;
@@ -113,7 +142,18 @@ void addBenchCommand(CLI::App& app) {
                   "falloff for every scene: binary, wendland, sqrt, exponential (default: each scene's)");
   cmd->add_option("--seed", args->seed, "reference seed")->capture_default_str()->check(inRange(limits::kSeed64));
   cmd->add_option("--output,-o", args->outDir, "output folder")->capture_default_str();
-  cmd->add_flag("!--no-temporal", args->temporal, "skip the temporal-stability run on the animated scene");
+  CLI::Option* noTemporal =
+      cmd->add_flag("!--no-temporal", args->temporal, "skip the temporal-stability run on the animated scene");
+  cmd->add_flag("--scaling", args->scaling,
+                "instead of the scene sweep: AO time against resolution (sphere-plane at 512x384, 1024x768, "
+                "1920x1080) and triangles (its sphere at 18k, 110k, 1.0M triangles in all, 1024x768), "
+                "scaling.csv and scaling.png")
+      ->excludes("--scenes")
+      ->excludes("--size")
+      ->excludes("--still")
+      ->excludes("--profile")
+      ->excludes("--falloff")
+      ->excludes(noTemporal);
   cmd->callback([args] { runBenchCommand(*args); });
 }
 

@@ -131,8 +131,10 @@ void main()
   vec3 p = aoViewPosition(g);
   AO_TYPE ao = receives ? aoAt(pix, g, p) : AO_TYPE(0.0);
 #if AO_BAKED
-  // Baked and dynamic occlusion as independent: 1 - A = (1 - baked)(1 - AO).
-  ao = receives ? AO_TYPE(1.0) - (AO_TYPE(1.0) - ao) * (1.0 - texelFetch(aoBaked, g, 0).r) : ao;
+  // Baked and dynamic occlusion as independent: 1 - A = (1 - baked)(1 - AO), written as
+  // AO + baked (1 - AO) so that no baked occlusion leaves AO as it is, to the last bit (1 - (1 - AO)
+  // would round AO to a multiple of 2^-24).
+  ao = receives ? ao + AO_TYPE(texelFetch(aoBaked, g, 0).r) * (AO_TYPE(1.0) - ao) : ao;
 #endif
 #if AO_MULTIPLY
   gl_FragData[0] = vec4(vec3(1.0) - vec3(ao), 1.0);

@@ -1,14 +1,17 @@
 // The bench: CSV schema, rows that agree with the metrics computed by hand, and bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "bench/Bench.h"
 #include "bench/BenchResult.h"
 #include "bench/PairedTiming.h"
+#include "bench/ScalingBench.h"
 #include "bench/StillFrames.h"
 #include "core/Geometry.h"
 #include "methods/MethodRegistry.h"
@@ -208,4 +211,77 @@ TEST(Bench, StillFramesConvergeTowardsTheBias) {
   EXPECT_LE(ob.stillBias * ob.stillBias, ob.rmse * ob.rmse);
   cfg.stillFrames = 8;
   EXPECT_THROW(runBench(cfg), std::invalid_argument);
+}
+
+namespace {
+// A frame that sleeps the given milliseconds, call by call, the last one from then on.
+std::function<StageTimes()> sleepingFrame(std::vector<int> ms) {
+  auto calls = std::make_shared<std::size_t>(0);
+  return [=] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(ms[std::min((*calls)++, ms.size() - 1)]));
+    return StageTimes{};
+  };
+}
+}  // namespace
+
+TEST(Bench, WarmUpRunsUntilTheFramesSettle) {
+  // First frames that get faster one by one (a heavy scene's uploads, caches filling): the warm-up
+  // outlasts them, so no timed pair sees them, and stops once both frames repeat within 15 %.
+  const PairedTiming t = timePairs(sleepingFrame({20}), sleepingFrame({200, 120, 80, 40}), 2, 3);
+  EXPECT_GE(t.warmupPairs, 5);
+  EXPECT_LE(t.warmupPairs, 2 + 8);
+  EXPECT_LT(t.aoMs, 100.0);
+  EXPECT_GT(t.aoMs, 10.0);
+  // A frame that never settles stops the warm-up at its cap; none asked, none run.
+  auto flip = std::make_shared<int>(0);
+  const auto unsettled = [flip] {
+    std::this_thread::sleep_for(std::chrono::milliseconds((*flip)++ % 2 ? 5 : 40));
+    return StageTimes{};
+  };
+  EXPECT_EQ(timePairs(sleepingFrame({5}), unsettled, 1, 1).warmupPairs, 1 + 8);
+  EXPECT_EQ(timePairs(sleepingFrame({5}), sleepingFrame({5}), 0, 1).warmupPairs, 0);
+}
+
+TEST(Bench, ScalingRowsFollowResolutionAndTriangles) {
+  ScalingConfig cfg;
+  cfg.runs = {{"obscurance", "samples=2"}};
+  cfg.sizes = {{64, 48}, {96, 72}};
+  cfg.sphereSegments = {{8, 4}, {16, 8}};
+  cfg.trianglesWidth = 80;
+  cfg.trianglesHeight = 60;
+  cfg.refSamples = 4;
+  cfg.frames = 1;
+  cfg.progress = false;
+  int streamed = 0;
+  cfg.onRow = [&](const ScalingRow&) { ++streamed; };
+  const std::vector<ScalingRow> rows = runScalingBench(cfg);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(streamed, 4);
+  // The floor's 64 x 64 grid (8192 triangles) and a UV sphere of slices * (2 stacks - 2).
+  const std::size_t canonical = 8192 + 256 * (2 * 128 - 2);
+  EXPECT_EQ(rows[0].axis, "resolution");
+  EXPECT_EQ(rows[0].row.width, 64);
+  EXPECT_EQ(rows[1].row.height, 72);
+  EXPECT_EQ(rows[0].triangles, canonical);
+  EXPECT_EQ(rows[2].axis, "triangles");
+  EXPECT_EQ(rows[2].triangles, 8192u + 8 * 6);
+  EXPECT_EQ(rows[3].triangles, 8192u + 16 * 14);
+  EXPECT_EQ(rows[3].row.width, 80);
+  for (const auto& r : rows) {
+    EXPECT_GT(r.row.rmse, 0.0);
+    EXPECT_LT(r.row.rmse, 0.5);
+  }
+  // The csv line has one field per column (no field here holds a comma).
+  const std::string line = scalingCsvLine(rows[2]);
+  EXPECT_EQ(static_cast<std::size_t>(std::count(line.begin(), line.end(), ',')), scalingCsvColumns().size() - 1);
+  EXPECT_EQ(scalingCsvColumns()[0], "axis");
+  const auto png = (std::filesystem::temp_directory_path() / "aokit-scaling.png").string();
+  writeScalingChart(png, rows);
+  EXPECT_GT(std::filesystem::file_size(png), 1000u);
+  std::filesystem::remove(png);
+
+  cfg.runs = {{"obscurance", "samples=0"}};
+  streamed = 0;
+  EXPECT_THROW(runScalingBench(cfg), std::invalid_argument);
+  EXPECT_EQ(streamed, 0);
 }

@@ -70,3 +70,11 @@ TEST_F(CliSettings, SceneFilesEnforceTheCliRanges) {
     expectRenderRefused(write("range.json", c.json), c.range);
   }
 }
+
+TEST_F(CliSettings, ScalingRunsItsOwnScenesAndSizes) {
+  // --scaling chooses the scenes and sizes; asking for others as well is refused, nothing written.
+  expectRefused({"bench", "--scaling", "--scenes", "cubes", "-o", path("out")}, "--scenes excludes --scaling");
+  expectRefused({"bench", "--scaling", "--size", "64x48", "-o", path("out")}, "--size excludes --scaling");
+  expectRefused({"bench", "--scaling", "--still", "16", "-o", path("out")}, "--still excludes --scaling");
+  expectRefused({"bench", "--scaling", "--methods", "obscurance:samples=0", "-o", path("out")}, "samples");
+}

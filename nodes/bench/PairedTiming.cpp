@@ -28,9 +28,23 @@ double timed(F&& f) {
 PairedTiming timePairs(const std::function<StageTimes()>& baseFrame, const std::function<StageTimes()>& methodFrame,
                        int warmup, int pairs) {
   if (pairs < 1 || warmup < 0) throw std::invalid_argument("timePairs: need at least one timed pair");
-  for (int i = 0; i < warmup; ++i) {
-    baseFrame();
-    methodFrame();
+  // At least `warmup` pairs, then more until both frames have settled (each within 15 % of its
+  // previous one), at most kMaxExtraWarmup more: the first frames of a heavy scene (buffer uploads,
+  // shader variants, caches) would otherwise read as the first row's AO time.
+  constexpr int kMaxExtraWarmup = 8;
+  double lastBase = -1.0, lastMethod = -1.0;
+  auto settled = [](double now, double before) { return before > 0.0 && std::abs(now - before) <= 0.15 * before; };
+  int warmed = 0;
+  for (; warmup > 0 && warmed < warmup + kMaxExtraWarmup; ++warmed) {
+    const double b = timed([&] { baseFrame(); });
+    const double m = timed([&] { methodFrame(); });
+    const bool steady = settled(b, lastBase) && settled(m, lastMethod);
+    lastBase = b;
+    lastMethod = m;
+    if (warmed + 1 >= warmup && steady) {
+      ++warmed;
+      break;
+    }
   }
   std::vector<double> base, method, diff;
   std::vector<std::pair<std::string, std::vector<double>>> stages;
@@ -52,6 +66,7 @@ PairedTiming timePairs(const std::function<StageTimes()>& baseFrame, const std::
   }
   PairedTiming t;
   t.pairs = pairs;
+  t.warmupPairs = warmed;
   t.baseMs = quantile(base, 0.5);
   t.frameMs = quantile(method, 0.5);
   t.aoMs = quantile(diff, 0.5);

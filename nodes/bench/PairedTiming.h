@@ -17,9 +17,11 @@ struct PairedTiming {
   double aoMs = 0.0, aoQ1Ms = 0.0, aoQ3Ms = 0.0;  // median and quartiles of method - base
   StageTimes stages;                             // median per stage, in first-seen order
   int pairs = 0;
+  int warmupPairs = 0;  // untimed pairs run first (see timePairs)
 };
 
-// Runs `warmup` untimed pairs, then `pairs` timed ones. Each callback must render one frame and
+// Runs at least `warmup` untimed pairs, more (up to 8) until the base and the method frame have
+// each settled within 15 % of their previous frame, then `pairs` timed ones. Each callback must render one frame and
 // finish it, and returns that frame's GPU stage times (empty if it has none; the base frame's are
 // summed into its GPU time).
 PairedTiming timePairs(const std::function<StageTimes()>& baseFrame, const std::function<StageTimes()>& methodFrame,

@@ -11,6 +11,8 @@ namespace aokit {
 SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera, int width, int height,
                                   PrimaryNormal normal) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("castPrimarySamples: image size must be positive");
+  if (camera.parallel && !(camera.parallelScale > 0.0 && std::isfinite(camera.parallelScale)))
+    throw std::invalid_argument("castPrimarySamples: a parallel camera needs a positive parallel scale");
   const glm::dvec3 forward = glm::normalize(camera.focalPoint - camera.position);
   const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.viewUp));
   const glm::dvec3 up = glm::cross(right, forward);
@@ -23,10 +25,13 @@ SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera
   rtcInitIntersectContext(&ctx);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      const double sx = (2.0 * (x + 0.5) / width - 1.0) * tanHalf * aspect;
-      const double sy = (2.0 * (y + 0.5) / height - 1.0) * tanHalf;
-      const glm::vec3 dir(glm::normalize(forward + sx * right + sy * up));
-      RTCRayHit rh = makeRayHit(glm::vec3(camera.position), dir, 0.0f, std::numeric_limits<float>::infinity());
+      const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 2.0 * (y + 0.5) / height - 1.0;
+      // Perspective: every ray from the eye; parallel: along the view from the camera's plane.
+      const double half = camera.parallel ? camera.parallelScale : tanHalf;
+      const glm::dvec3 offset = nx * half * aspect * right + ny * half * up;
+      const glm::vec3 dir(camera.parallel ? forward : glm::normalize(forward + offset));
+      const glm::vec3 origin(camera.parallel ? camera.position + offset : camera.position);
+      RTCRayHit rh = makeRayHit(origin, dir, 0.0f, std::numeric_limits<float>::infinity());
       rtcIntersect1(scene.scene(), &ctx, &rh);
       if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
 

@@ -12,8 +12,9 @@ enum class PrimaryNormal {
   Geometric  //!< the hit triangle's own normal: an oracle that shares nothing with the G-buffer
 };
 
-// One primary ray through each pixel centre of a width x height pinhole image (VTK conventions:
-// vertical view angle, bottom row first). Hit pixels get the world hit point and the chosen normal
+// One primary ray through each pixel centre of a width x height image (VTK conventions: vertical
+// view angle or parallel scale, bottom row first): from the eye for a perspective camera, along
+// the view direction from the camera's plane for a parallel one. Hit pixels get the world hit point and the chosen normal
 // (the facet normal where the mesh has no normals), turned to face the camera. Throws
 // std::invalid_argument on a non-positive size.
 SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera, int width, int height,

@@ -23,6 +23,10 @@ std::vector<std::string> builtinSceneNames();
 // std::runtime_error when a mesh scene's file is missing or unreadable.
 Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& opts = {});
 
+// sphere-plane with its sphere at other segment counts (the bench's triangle scaling); the
+// canonical scene is 256 x 128. Throws std::invalid_argument below 3 slices or 2 stacks.
+Scene makeSpherePlaneScene(int sphereSlices, int sphereStacks);
+
 // $AOKIT_MODELS_DIR when set, else this source tree's models/ folder.
 std::string defaultModelsDir();
 

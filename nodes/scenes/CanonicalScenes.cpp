@@ -11,12 +11,12 @@ namespace {
 // White: the note's AO-only comparisons use a white, ambient-only material.
 constexpr float kWhite = 1.0f;
 
-Scene makeSphereOverFloor() {
+Scene makeSphereOverFloor(int slices = 256, int stacks = 128) {
   Scene scene;
   // Floor: z = 0, x, y in [-4, 4]. A 64 x 64 grid rather than two triangles so that per-vertex
   // consumers (bakers, debugging views) have samples; the surface is the same flat square.
   addPlaced(*scene.root, makeGridPlane(8.0, 8.0, 64, 64), glm::dmat4(1.0), glm::vec3(kWhite), "floor");
-  addPlaced(*scene.root, makeUVSphere(1.0, 256, 128), translation({0.0, 0.0, 1.2}), glm::vec3(kWhite), "sphere");
+  addPlaced(*scene.root, makeUVSphere(1.0, slices, stacks), translation({0.0, 0.0, 1.2}), glm::vec3(kWhite), "sphere");
   scene.root->setAORadius(1.5);
   scene.root->setFalloff(Falloff::Binary);
   return scene;
@@ -24,8 +24,10 @@ Scene makeSphereOverFloor() {
 
 }  // namespace
 
-Scene makeSpherePlaneScene() {
-  Scene scene = makeSphereOverFloor();
+Scene makeSpherePlaneScene() { return makeSpherePlaneScene(256, 128); }
+
+Scene makeSpherePlaneScene(int sphereSlices, int sphereStacks) {
+  Scene scene = makeSphereOverFloor(sphereSlices, sphereStacks);
   scene.name = "sphere-plane";
   scene.camera.position = {0.0, -6.5, 4.0};
   scene.camera.focalPoint = {0.0, 0.0, 0.7};

@@ -66,8 +66,6 @@ bool vtkAOKitReference::Compute(vtkRenderer* renderer, vtkFloatArray* ao, int si
     o.seed = static_cast<std::uint64_t>(Seed);
     o.progress = [this](double f) { InvokeEvent(vtkCommand::ProgressEvent, &f); };
     vtkCamera* c = renderer->GetActiveCamera();
-    if (c->GetParallelProjection())
-      throw std::invalid_argument("reference: a parallel projection is not supported (perspective cameras only)");
     const int* s = renderer->GetSize();
     if (s[0] < 1 || s[1] < 1) throw std::invalid_argument("reference: the renderer has no size yet (render once first)");
     auto root = casterScene(renderer);
@@ -77,6 +75,8 @@ bool vtkAOKitReference::Compute(vtkRenderer* renderer, vtkFloatArray* ao, int si
     cam.focalPoint = glm::dvec3(c->GetFocalPoint()[0], c->GetFocalPoint()[1], c->GetFocalPoint()[2]);
     cam.viewUp = glm::dvec3(c->GetViewUp()[0], c->GetViewUp()[1], c->GetViewUp()[2]);
     cam.viewAngleDeg = c->GetViewAngle();
+    cam.parallel = c->GetParallelProjection() != 0;
+    cam.parallelScale = c->GetParallelScale();
     const aokit::EmbreeScene scene(*root);
     const aokit::SurfaceSamples hits = aokit::castPrimarySamples(scene, cam, s[0], s[1]);
     const aokit::AOBuffer out = aokit::computeReferenceAO(scene, hits, o);

@@ -2,7 +2,7 @@
 #define vtkAOKitReference_h
 // vtkAOKitReference: the kit's Embree ground truth for what a renderer shows, and the bench's
 // error metrics. Compute() casts one CPU primary ray through each pixel centre of the renderer's
-// viewport (its active camera, perspective) into the meshes of its visible casting props (the
+// viewport (its active camera, perspective or parallel) into the meshes of its visible casting props (the
 // meshes the families themselves collect: actors, composite and glyph mappers, assemblies), then
 // `Samples` AO rays per hit over the hit facet's hemisphere, cosine weighted, within `Radius`,
 // weighted by `Falloff`. Output: occlusion in [0, 1], -1 where the ray hits nothing, bottom row

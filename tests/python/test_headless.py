@@ -17,7 +17,7 @@ SCRIPT = textwrap.dedent("""
     window = aokit.OffscreenWindow(%d, %d)
     renderer = window.GetRenderers().GetFirstRenderer()
     scene = aokit.load_scene("sphere-plane", renderer)
-    for method in ("obscurance", "hybrid"):
+    for method in ("obscurance", "hybrid", "field"):
         p = aokit.new_pass(method)
         p.set_scene_radius(scene.GetAORadius())
         p.SetSceneFalloff(scene.GetFalloff())
@@ -38,7 +38,7 @@ def test_headless_script_equals_the_cli_bit_for_bit(tmp_path):
     assert done.returncode == 0, done.stderr
     assert "rendered without DISPLAY" in done.stdout
     assert "GLEW" not in done.stderr and "ERR" not in done.stderr, done.stderr
-    for method in ("obscurance", "hybrid"):
+    for method in ("obscurance", "hybrid", "field"):
         ao = np.load(tmp_path / ("ao-" + method + ".npy"))
         assert ao.max() > 0.3
         assert np.array_equal(ao, cli_ao(method, tmp_path))
