@@ -20,15 +20,13 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
+#include "bench/ChartColors.h"
 #include "output/ImageFiles.h"
 #include "headless/OffscreenWindow.h"
 
 namespace aokit {
 
 namespace {
-const unsigned char kColors[][3] = {{0, 0, 0},     {214, 39, 40}, {31, 119, 180}, {44, 160, 44},
-                                    {255, 127, 14}, {148, 103, 189}, {140, 86, 75}, {227, 119, 194}};
-
 vtkSmartPointer<vtkTable> xyTable(const std::vector<const BenchRow*>& pts, const std::string& yName) {
   auto table = vtkSmartPointer<vtkTable>::New();
   vtkNew<vtkFloatArray> x, y;
@@ -94,7 +92,7 @@ void writeErrorTimeChart(const std::string& path, const std::vector<BenchRow>& r
         if (r.scene == scenes[si] && r.method == methodOrder[mi]) pts.push_back(&r);
       if (pts.empty()) continue;
       // Every setting a point (one legend entry per method), its best-for-the-time settings a line.
-      const auto* c = kColors[mi % 8];
+      const auto* c = kChartColors[mi % 8];
       vtkPlot* points = chart->AddPlot(vtkChart::POINTS);
       points->SetInputData(xyTable(pts, methodOrder[mi]), 0, 1);
       points->SetColor(c[0], c[1], c[2], 255);

@@ -21,9 +21,9 @@ struct PairedTiming {
 };
 
 // Runs at least `warmup` untimed pairs, more (up to 8) until the base and the method frame have
-// each settled within 15 % of their previous frame, then `pairs` timed ones. Each callback must render one frame and
-// finish it, and returns that frame's GPU stage times (empty if it has none; the base frame's are
-// summed into its GPU time).
+// each settled within 15 % of their previous frame, then `pairs` timed ones. Each callback must
+// render one frame and finish it, and returns that frame's GPU stage times (empty if it has none;
+// the base frame's are summed into its GPU time).
 PairedTiming timePairs(const std::function<StageTimes()>& baseFrame, const std::function<StageTimes()>& methodFrame,
                        int warmup, int pairs);
 

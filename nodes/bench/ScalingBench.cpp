@@ -17,6 +17,7 @@
 #include <vtkTable.h>
 
 #include "bench/Bench.h"
+#include "bench/ChartColors.h"
 #include "core/Geometry.h"
 #include "core/NodeVisitor.h"
 #include "core/TriangleMesh.h"
@@ -95,9 +96,6 @@ std::string scalingCsvLine(const ScalingRow& r) {
 }
 
 namespace {
-const unsigned char kColors[][3] = {{0, 0, 0},      {214, 39, 40},   {31, 119, 180}, {44, 160, 44},
-                                    {255, 127, 14}, {148, 103, 189}, {140, 86, 75},  {227, 119, 194}};
-
 void fillPanel(vtkChartXY* chart, const std::vector<ScalingRow>& rows, const std::string& axis) {
   std::vector<std::string> order;
   for (const auto& r : rows)
@@ -134,7 +132,7 @@ void fillPanel(vtkChartXY* chart, const std::vector<ScalingRow>& rows, const std
                       byPixels ? b.width * double(b.height) / 1e6 : std::log10(double(pts[i]->triangles)));
       table->SetValue(static_cast<vtkIdType>(i), 1, b.aoMs);
     }
-    const auto* c = kColors[mi % 8];
+    const auto* c = kChartColors[mi % 8];
     vtkPlot* line = chart->AddPlot(vtkChart::LINE);
     line->SetInputData(table, 0, 1);
     line->SetColor(c[0], c[1], c[2], 255);

@@ -25,12 +25,12 @@ SurfaceSamples castPrimarySamples(const EmbreeScene& scene, const Camera& camera
   rtcInitIntersectContext(&ctx);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 2.0 * (y + 0.5) / height - 1.0;
       // Perspective: every ray from the eye; parallel: along the view from the camera's plane.
       const double half = camera.parallel ? camera.parallelScale : tanHalf;
-      const glm::dvec3 offset = nx * half * aspect * right + ny * half * up;
-      const glm::vec3 dir(camera.parallel ? forward : glm::normalize(forward + offset));
-      const glm::vec3 origin(camera.parallel ? camera.position + offset : camera.position);
+      const double sx = (2.0 * (x + 0.5) / width - 1.0) * half * aspect;
+      const double sy = (2.0 * (y + 0.5) / height - 1.0) * half;
+      const glm::vec3 dir(camera.parallel ? forward : glm::normalize(forward + sx * right + sy * up));
+      const glm::vec3 origin(camera.parallel ? camera.position + sx * right + sy * up : camera.position);
       RTCRayHit rh = makeRayHit(origin, dir, 0.0f, std::numeric_limits<float>::infinity());
       rtcIntersect1(scene.scene(), &ctx, &rh);
       if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
