@@ -32,7 +32,7 @@ struct BenchArgs {
 
 const std::vector<std::string> kDefaultScenes = {"sphere-plane", "sphere-offscreen", "cubes",  "tank",   "stack",
                                                  "corridor",     "room",             "open-box", "bunny", "fandisk",
-                                                 "hidden",       "behind"};
+                                                 "hidden",       "behind",           "isosurface", "streamlines", "cfd"};
 
 // `--scaling`: its own scenes and sizes, the curve points of defaultScalingRuns() unless --methods.
 void runScalingCommand(const BenchArgs& a) {
@@ -120,7 +120,7 @@ void addBenchCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bench", "time and error of every method against the reference");
   cmd->add_option("--scenes", args->scenes,
                   "scenes, separated by ',' or ';' (default: sphere-plane, sphere-offscreen, cubes, tank, stack, "
-                  "corridor, room, open-box, bunny, fandisk, hidden, behind)");
+                  "corridor, room, open-box, bunny, fandisk, hidden, behind, isosurface, streamlines, cfd)");
   cmd->add_option("--methods", args->methodsArg,
                   "methods, separated by ',' or ';': a method (all its bench settings) or method:key=value,key=value "
                   "(default: all)");

@@ -147,7 +147,7 @@ TEST(BuiltinScenes, EveryNameBuilds) {
     Scene s = makeBuiltinScene(name, sourceTreeModels());
     EXPECT_EQ(s.name, name);
     const auto instances = collectInstances(*s.root);
-    ASSERT_GE(instances.size(), 2u);
+    ASSERT_GE(instances.size(), 1u);  // scientific scenes are one mesh (isosurface, streamlines)
     for (const auto& inst : instances) {
       ASSERT_TRUE(inst.geometry->mesh());
       inst.geometry->mesh()->validate();

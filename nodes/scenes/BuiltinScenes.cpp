@@ -29,6 +29,9 @@ const std::vector<std::pair<std::string, Builder>>& registry() {
       {"courtyard", [](const BuiltinOptions&) { return makeCourtyardScene(); }},
       {"bunny", [](const BuiltinOptions& o) { return makePackagedMeshScene("bunny", o.modelsDir); }},
       {"fandisk", [](const BuiltinOptions& o) { return makePackagedMeshScene("fandisk", o.modelsDir); }},
+      {"isosurface", [](const BuiltinOptions&) { return makeIsosurfaceScene(); }},
+      {"streamlines", [](const BuiltinOptions&) { return makeStreamlineScene(); }},
+      {"cfd", [](const BuiltinOptions&) { return makeCfdScene(); }},
   };
   return r;
 }

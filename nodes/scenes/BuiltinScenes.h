@@ -16,7 +16,7 @@ struct BuiltinOptions {
 };
 
 // sphere-plane, sphere-offscreen, cubes, tank, corridor, room, room-dark, open-box, hidden, behind,
-// animated, courtyard, bunny, fandisk.
+// animated, courtyard, bunny, fandisk, and scientific data: isosurface, streamlines, cfd.
 std::vector<std::string> builtinSceneNames();
 
 // Throws std::invalid_argument for an unknown name or an option out of range, and

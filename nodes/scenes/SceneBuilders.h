@@ -20,6 +20,10 @@ Scene makeCourtyardScene();
 Scene makeOpenBoxScene();
 Scene makeHiddenScene();
 Scene makeBehindScene();
+// Scientific data: an isosurface pair, streamline tubes, multiblock CFD walls.
+Scene makeIsosurfaceScene();
+Scene makeStreamlineScene();
+Scene makeCfdScene();
 // "bunny" or "fandisk": a packaged mesh stood on a ground plane.
 Scene makePackagedMeshScene(const std::string& name, const std::string& modelsDir);
 
