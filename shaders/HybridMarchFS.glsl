@@ -4,7 +4,7 @@
 // of the pixel it stands for (aoCellTexel) is ray-marched through the bit-packed voxel grid, step
 // for step as the CPU oracle (nodes/voxel/HybridMarch.cpp, HybridSampling.cpp; the contract in
 // nodes/voxel/README.md): object-space jitter keyed by the world position's cell and the quantized
-// normal, HAO_RAYS rays of a uniform cone pattern around the normal, HAO_STEPS steps over R with a
+// normal, HAO_RAYS rays of a uniform cone pattern around the normal, haoSteps steps over R with a
 // per-ray offset, each step testing the voxels between it and the previous step in its column
 // (HAO_SPAN_TEST) or its own voxel; the first hit weighs k(d) of the falloff; A = sum k cos /
 // sum cos. Integer parts (hash, key, voxel addresses) are bit-exact with the CPU's.
@@ -25,6 +25,7 @@ uniform int haoDimsV[3];     // grid dimensions (vtkShaderProgram sets no ivec3)
 uniform int haoEmpty;         // 1: no grid this frame (no caster near the view): AO 0
 uniform mat4 haoWorldToGrid;
 uniform float haoRadius;      // R, world units
+uniform int haoSteps;         // steps per ray (a uniform: the grid's voxel size can raise it)
 uniform float haoCosMax;      // cos of the cone's half-angle
 uniform float haoNormalOffset;  // world units
 uniform float haoInvCell;     // 1 / jitter cell, 1 / world units
@@ -184,7 +185,7 @@ float haoOcclusion(vec3 p, vec3 n)
   haoBasis(n, t, b);
   mat3 m3 = mat3(haoWorldToGrid);
   vec3 origin = haoLeaveSetVoxel((haoWorldToGrid * vec4(p + haoNormalOffset * n, 1.0)).xyz, normalize(m3 * n));
-  float stepLength = haoRadius / float(HAO_STEPS);
+  float stepLength = haoRadius / float(haoSteps);
   int originK = haoVoxel(origin).z;
   float sum = 0.0, weights = 0.0;
   for (int i = haoFirstRay; i < haoRayEnd; ++i)
@@ -194,7 +195,7 @@ float haoOcclusion(vec3 p, vec3 n)
     float offset = fract(jitter.z + float(i) * 0.754878);
     float k = 0.0;
     int previousK = originK;
-    for (int j = 0; j < HAO_STEPS; ++j)
+    for (int j = 0; j < haoSteps; ++j)
     {
       float dist = (float(j) + offset) * stepLength;
       ivec3 g = haoVoxel(origin + dist * dir);

@@ -14,12 +14,17 @@ namespace aokit {
 std::string HybridMarchConstants::defines() const {
   std::ostringstream d;
   d << "#define HAO_RAYS " << rays << "\n"
-    << "#define HAO_STEPS " << steps << "\n"
     << "#define HAO_FALLOFF " << static_cast<int>(falloff) << "\n"
     << "#define HAO_SPAN_TEST " << int(spanTest) << "\n"
     << "#define HAO_STATIC " << int(staticDynamic) << "\n"
     << "#define HAO_MAX_ZONES " << kMaxDynamicZones << "\n";
   return d.str();
+}
+
+int marchSteps(const HybridSettings& s, double radius, double voxelSize) {
+  if (!(s.stride > 0.0)) return s.steps;
+  const double needed = std::ceil(radius / voxelSize / s.stride);
+  return static_cast<int>(std::clamp(needed, static_cast<double>(s.steps), 256.0));
 }
 
 HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const FrameContext& context,
@@ -32,7 +37,7 @@ HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const Fra
     throw std::invalid_argument("hybrid: the voxel frame has no positive voxel size");
   HybridMarchConstants c;
   c.rays = s.rays;
-  c.steps = s.steps;
+  c.steps = marchSteps(s, R, frame.voxelSize);
   c.falloff = context.falloff;
   c.spanTest = s.spanTest;
   c.radius = static_cast<float>(R);

@@ -25,7 +25,7 @@ namespace aokit {
 // Made by makeHybridMarchConstants (the settings hold the defaults).
 struct HybridMarchConstants {
   int rays = 0;                       // #define HAO_RAYS
-  int steps = 0;                      // #define HAO_STEPS
+  int steps = 0;                      // uniform haoSteps (marchSteps: the grid can raise it)
   Falloff falloff = Falloff::Binary;  // #define HAO_FALLOFF (0 binary, 1 wendland, 2 sqrt, 3 exponential)
   bool spanTest = true;               // #define HAO_SPAN_TEST
   bool staticDynamic = false;         // #define HAO_STATIC (GPU: a second, static grid; StaticDynamic.h)
@@ -39,6 +39,9 @@ struct HybridMarchConstants {
 
   std::string defines() const;
 };
+
+// Steps per ray: the setting's, or more where one step would cross more than `stride` voxels.
+int marchSteps(const HybridSettings& s, double radius, double voxelSize);
 
 // Validates the settings, then resolves them against the frame's context (radius, falloff:
 // render/FrameContext.h) and the grid's frame (offset and jitter cell are in voxels). Throws

@@ -43,7 +43,6 @@ void HybridPass::SetSettings(const HybridSettings& s) {
 std::string HybridPass::MarchDefines(const FrameContext& context) const {
   HybridMarchConstants c;
   c.rays = Settings.rays;
-  c.steps = Settings.steps;
   c.falloff = context.falloff;
   c.spanTest = Settings.spanTest;
   c.staticDynamic = Settings.staticBake;
@@ -97,6 +96,7 @@ vtkTextureObject* HybridPass::RenderAO(DeferredFrame& f) {
   f.bindCommon(p);
   Voxels.bind(p, f.renWin, Settings.staticBake);
   p->SetUniformf("haoRadius", c.radius);
+  p->SetUniformi("haoSteps", c.steps);
   p->SetUniformf("haoCosMax", c.cosMax);
   p->SetUniformf("haoNormalOffset", c.normalOffset);
   p->SetUniformf("haoInvCell", c.invJitterCell);

@@ -62,6 +62,8 @@ const Schema<HybridSettings>& hybridSchema() {
     }
     t.integer("rays", &S::rays, 1, 256, "rays per AO-map pixel");
     t.integer("steps", &S::steps, 1, 256, "grid tests per ray");
+    t.number("stride", &S::stride, Interval::closed(0, 64),
+             "most voxels one step may cross (more steps where R / steps is longer, up to 256); 0: steps as set");
     t.flag("span", &S::spanTest, "each step tests the voxels since the last one in its column");
     t.number("spread", &S::spread, Interval::aboveZero(1), "cone half-angle, fraction of 90 degrees");
     t.number("offset", &S::normalOffset, Interval::closed(0, 4), "ray origins lifted along the normal, voxels");

@@ -45,6 +45,10 @@ struct HybridSettings {
   // AO sampling (eq. 4).
   int rays = 32;                    //!< rays per AO-map pixel (seed Table 1: 32)
   int steps = 8;                    //!< grid tests per ray, evenly spaced over R (seed: 8)
+  double stride = 0.0;              //!< most voxels one step may cross: where R / steps is longer
+                                    //!<   on the grid, the ray takes more steps (up to 256), since
+                                    //!<   a sheet thinner than a step across the grid's x or y is
+                                    //!<   stepped over (a finer grid then errs more); 0 = steps as set
   bool spanTest = true;             //!< each step tests the voxels between the previous sample and
                                     //!<   this one along the grid's depth axis, in this sample's
                                     //!<   column (one texel of the packed grid): sheets across that
