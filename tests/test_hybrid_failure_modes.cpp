@@ -88,8 +88,8 @@ BuiltinOptions sourceTreeModels() {
 
 // A wall one voxel thick at distance H in front of the receiver, across the grid's x axis (the
 // receiver's normal is +x): point tests and span tests alike test one column per step, so a step
-// longer than the wall can land on either side of it. Across the depth axis (a ceiling) the span
-// test catches it (test_hybrid_march.cpp).
+// longer than the wall can land on either side of it, unless stride raises the steps. Across the
+// depth axis (a ceiling) the span test catches it (test_hybrid_march.cpp).
 TEST(HybridFailureModes, ThinWallsAcrossTheGridsXAxisLeak) {
   const double H = 0.5, R = 1.0;
   Scene s;
@@ -123,6 +123,18 @@ TEST(HybridFailureModes, ThinWallsAcrossTheGridsXAxisLeak) {
   // Long steps leak: most of the wall's occlusion is lost; steps shorter than the voxels close it.
   EXPECT_LT(leakLong, 0.5 * ceilingAO(H, R));
   EXPECT_GT(leakShort, ceilingAO(H, R) - 0.1);
+  // stride = 2.5 raises the 8 steps until none crosses more than 2.5 voxels: the wall holds.
+  HybridSettings hs;
+  hs.gridResolution = 512;
+  hs.rays = 64;
+  hs.stride = 2.5;
+  const HybridMarchConstants c = makeHybridMarchConstants(hs, frameContext(hs.common, R, Falloff::Binary), frame);
+  EXPECT_EQ(c.steps, static_cast<int>(std::ceil(R / frame.voxelSize / 2.5)));
+  double sum = 0.0;
+  for (int i = 0; i < 64; ++i) sum += marchHybridAO(grid, c, glm::vec3(0.0f, 0.013f * i - 0.4f, 0.007f * i), {1, 0, 0});
+  std::printf("  stride 2.5 (%d steps): span tests %.3f\n", c.steps, sum / 64);
+  EXPECT_GT(sum / 64, ceilingAO(H, R) - 0.05);
+  EXPECT_LT(sum / 64, ceilingAO(H, R) + 0.03);
 }
 
 // A region budget smaller than the view: receivers beyond the cut get no occlusion.
