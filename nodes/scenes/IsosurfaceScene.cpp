@@ -3,7 +3,7 @@
 // Gaussian blobs on a 128^3 grid; blobs near the domain's faces cut the outer contour open there,
 // so the eye looks through the openings onto the inner contour. Thin necks join the outer blobs.
 // The failure cases this brings: a lone mesh that occludes itself (no other occluder for fields),
-// nested sheets hidden from screen space, open single-sided edges, about 170k triangles.
+// nested sheets hidden from screen space, open single-sided edges, 178,760 triangles.
 #include <cmath>
 
 #include <vtkFlyingEdges3D.h>
