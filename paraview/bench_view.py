@@ -4,11 +4,16 @@ Ambient Occlusion"), on the same data and camera, timed as interleaved rounds (o
 configuration per round), medians with the spread (min..max) of each.
 
   scripts/pvbatch.sh paraview/bench_view.py [--size 1024x768] [--rounds 15]
+  mpiexec -n 2 scripts/pvbatch.sh paraview/bench_view.py     # the same across ranks
+
+Under MPI ParaView's sources split the sphere between the ranks (the plane source is whole on
+every rank); the times are rank 0's.
 """
 import argparse
 import statistics
 import time
 
+from paraview import servermanager
 from paraview.simple import Contour, CreateView, Render, ResetCamera, Show, Sphere, Plane, Wavelet
 
 parser = argparse.ArgumentParser()
@@ -57,7 +62,8 @@ for _ in range(args.rounds):
         times[name].append(1000.0 * (time.perf_counter() - t0))
 
 plain = statistics.median(times["plain"])
-print("scene %s %dx%d, %d interleaved rounds, pvbatch (one process)" % (args.scene, size[0], size[1], args.rounds))
+ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+print("scene %s %dx%d, %d interleaved rounds, pvbatch on %d rank(s)" % (args.scene, size[0], size[1], args.rounds, ranks))
 print("%-14s %9s %17s %9s %12s" % ("config", "frame ms", "spread", "AO ms", "AO / plain"))
 for name, t in times.items():
     med = statistics.median(t)

@@ -112,6 +112,12 @@ def main():
         <Documentation>When set, each still render writes its AO to this file as the CLI's
           --ao-float does (float32, bottom row first, -1 where no surface).</Documentation>
       </StringVectorProperty>
+      <DoubleVectorProperty name="AOExchangedBytes" command="GetAOExchangedBytes" information_only="1"
+                            number_of_elements="1" default_values="0" panel_visibility="never">
+        <SimpleDoubleInformationHelper/>
+        <Documentation>Bytes this process sent to the other ranks in the last frame (G-buffer
+          composite, gathered meshes); 0 in one process.</Documentation>
+      </DoubleVectorProperty>
 {props}
     </RenderViewProxy>
   </ProxyGroup>

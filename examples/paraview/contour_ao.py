@@ -5,8 +5,9 @@ a screenshot. Run with the kit's pvbatch wrapper (it puts ParaView's Python and 
 
 DATA: a VTK image file (.vti, .vtk) is contoured at the middle of its first point array's range;
 a surface mesh (.vtp, .ply, .stl, .obj) is shown through ExtractSurface. Without DATA:
-ParaView's Wavelet source, contoured. Under MPI (mpiexec -n 2 ...) see the README: the view warns
-that each rank's AO sees that rank's geometry only.
+ParaView's Wavelet source, contoured. Under MPI (mpiexec -n 2 scripts/pvbatch.sh ...) each rank
+reads and contours its own piece, and the AO is that of one process (the view's ranks share their
+G-buffers and meshes; see the README).
 """
 import argparse
 

@@ -106,7 +106,8 @@ void FieldPass::PrepareFrame(vtkRenderer* renderer, FrameContext& context) {
     started = true;
     InvokeEvent(vtkCommand::ProgressEvent, &f);
   };
-  const bool replanned = Found->update(renderer, Settings, context.radius, context.falloff, progress);
+  const bool replanned = Found->update(renderer, Settings, context.radius, context.falloff, progress, context.ranks);
+  context.exchangedBytes += Found->exchangedBytes();
   if (started) InvokeEvent(vtkCommand::EndEvent);
   if (replanned) {
     Occluders.clear();

@@ -44,9 +44,9 @@ std::shared_ptr<Geometry> PropOccluders::geometryOf(const PropMesh& m) {
   return it->geometry;
 }
 
-std::vector<PropOccluders::Instance> PropOccluders::instances(vtkRenderer* renderer) {
+std::vector<PropOccluders::Instance> PropOccluders::instances(vtkRenderer* renderer, RankExchange* ranks) {
   std::vector<Instance> out;
-  for (const PropMesh& m : meshes_.collect(renderer)) {
+  for (const PropMesh& m : meshes_.collect(renderer, ranks)) {
     std::shared_ptr<Geometry> g = geometryOf(m);
     if (!g) continue;
     const double det = glm::determinant(glm::dmat3(m.modelToWorld));
@@ -83,8 +83,8 @@ bool PropOccluders::place(const std::vector<Instance>& found) {
 }
 
 bool PropOccluders::update(vtkRenderer* renderer, const FieldSettings& settings, double radius, Falloff falloff,
-                           const std::function<void(double)>& progress) {
-  const std::vector<Instance> found = instances(renderer);
+                           const std::function<void(double)>& progress, RankExchange* ranks) {
+  const std::vector<Instance> found = instances(renderer, ranks);
   const bool sameContext = planned_ && radius == radius_ && falloff == falloff_ && settings.kind == kind_;
   if (sameContext && place(found)) return false;
   // The props' signature: which meshes, at which scales (a failed bake is not retried until it changes).

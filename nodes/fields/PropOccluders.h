@@ -34,8 +34,10 @@ class PropOccluders {
   // runs 0 -> 1 over a re-plan's bakes. Props that cannot cast (a mesh that fails validation, a
   // degenerate matrix) get one warning each and cast nothing; a failed bake is one error and no
   // fields until the props change.
+  // With the ranks of a parallel renderer, every rank's meshes (parallel/RankMeshes.h).
   bool update(vtkRenderer* renderer, const FieldSettings& settings, double radius, Falloff falloff,
-              const std::function<void(double)>& progress);
+              const std::function<void(double)>& progress, RankExchange* ranks = nullptr);
+  std::size_t exchangedBytes() const { return meshes_.exchangedBytes(); }  // of the last update
   // Forgets the plan and every kept field (new bake settings).
   void clear();
 
@@ -56,7 +58,7 @@ class PropOccluders {
     std::shared_ptr<Geometry> held;
   };
   std::shared_ptr<Geometry> geometryOf(const PropMesh& m);
-  std::vector<Instance> instances(vtkRenderer* renderer);
+  std::vector<Instance> instances(vtkRenderer* renderer, RankExchange* ranks);
   bool place(const std::vector<Instance>& found);
   void warnOnce(vtkProp* prop, const std::string& why);
 

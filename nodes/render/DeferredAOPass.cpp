@@ -17,6 +17,8 @@
 #include <vtk_glew.h>
 
 #include "DeferredCombineFS.h"
+#include "parallel/GBufferComposite.h"
+#include "parallel/RankExchange.h"
 #include "render/AfterOpaque.h"
 #include "render/DeferredView.h"
 #include "render/SelectionGeometry.h"
@@ -63,6 +65,12 @@ vtkRenderPass* DeferredAOPass::GetDelegatePass() const { return Delegate; }
 void DeferredAOPass::SetSceneRadius(double r) {
   if (r == SceneRadius) return;
   SceneRadius = r;
+  Modified();
+}
+
+void DeferredAOPass::SetRankExchange(std::shared_ptr<RankExchange> ranks) {
+  if (ranks == Ranks) return;
+  Ranks = std::move(ranks);
   Modified();
 }
 
@@ -178,7 +186,7 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   Frame.renWin = renWin;
   Frame.state = state;
   Frame.timer = &Timer;
-  Frame.context = resolveFrameContext(CommonSettings(), SceneRadius, SceneFalloff, r);
+  Frame.context = resolveFrameContext(CommonSettings(), SceneRadius, SceneFalloff, r, Ranks.get());
   PrepareFrame(r, Frame.context);
   DeferredPlan plan;
   plan.renWin = renWin;
@@ -204,6 +212,8 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   gbuffer->SetCopyToOutput(failed != nullptr);
   gbuffer->Render(s);
   NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+  // Every rank's surfaces in every rank's G-buffer (parallel/GBufferComposite.h).
+  if (Frame.context.ranks) Frame.context.exchangedBytes += compositeGBuffer(*gbuffer, *Frame.context.ranks);
   Frame.mark("gbuffer");
   if (failed) return RenderAfterOpaque(s);
 
@@ -215,7 +225,14 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   state->vtkglDisable(GL_SCISSOR_TEST);
   ActiveTextures gbufferTextures{gbuffer->GetDepthTexture(), gbuffer->GetNormalTexture(), gbuffer->GetColorTexture(),
                                  gbuffer->GetFlagsTexture()};
-  const int limit = Accumulate > 0 ? Accumulate : Frame.config.accumulate;
+  int limit = Accumulate > 0 ? Accumulate : Frame.config.accumulate;
+  if (Frame.context.ranks && limit > 1) {
+    // A rank whose own props changed would restart its mean alone and leave the others' exchanges.
+    if (!WarnedParallelAccumulate)
+      vtkWarningMacro("accumulation is off on " << Frame.context.ranks->ranks() << " ranks (each frame is drawn anew)");
+    WarnedParallelAccumulate = true;
+    limit = 1;
+  }
   Frame.accumulated = v.accumulator.begin(Frame, GetMTime(), limit);
   v.result = v.accumulator.converged() ? v.accumulator.mean() : v.accumulator.add(Frame, RenderAO(Frame));
   const bool filtering = Frame.config.upsample.window > 0;

@@ -7,6 +7,7 @@
 //      frame, before anything is drawn.
 //   2. G-buffer (GBufferPass, lean layout: colour with AO flags in alpha, packed normal, depth;
 //      optional guard band, instance ids and baked AO). Positions are reconstructed from depth.
+//      With the ranks of a parallel renderer (SetRankExchange), composited across them by depth.
 //   3. the family's AO stage(s), at 1/downsample of the screen resolution: RenderAO() writes
 //      occlusion (or 1 - W per colour and 1 - O with ambient transfer) into the AO target and the
 //      view z of each target texel's pixel into the z target, and may filter the result further.
@@ -55,6 +56,7 @@ class vtkTextureObject;
 namespace aokit {
 
 class AfterOpaque;
+class RankExchange;
 
 class DeferredAOPass : public vtkOpenGLRenderPass {
  public:
@@ -100,6 +102,15 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   std::size_t MemoryBytes() const;
   // The G-buffer of `renderer` (default: the renderer drawn last); null before its first frame.
   GBufferPass* GetGBufferPass(vtkRenderer* renderer = nullptr) const;
+
+  // A parallel renderer's ranks (parallel/RankExchange.h; ParaView under mpiexec): with more than
+  // one, the G-buffer is composited across them before the AO stages and the world-space families
+  // cast from every rank's geometry, so the AO is the one-process AO. Every rank must draw the same
+  // frames. Accumulation is off then (a rank's props may change alone). Null (default): one process.
+  void SetRankExchange(std::shared_ptr<RankExchange> ranks);
+  RankExchange* GetRankExchange() const { return Ranks.get(); }
+  // Bytes this rank contributed to the last frame's exchanges (G-buffer and casters), 0 alone.
+  std::size_t GetExchangedBytes() const { return Frame.context.exchangedBytes; }
 
   // GPU stage times of the last frame (timing off by default).
   void SetStageTiming(StageTiming mode) { Timer.setMode(mode); }
@@ -158,6 +169,8 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
   double SceneRadius = 0.0;
   Falloff SceneFalloff = Falloff::Binary;
   int Accumulate = 0;
+  std::shared_ptr<RankExchange> Ranks;
+  bool WarnedParallelAccumulate = false;
   std::map<vtkRenderer*, std::unique_ptr<View>> Views;
   View* Current = nullptr;  // the renderer drawn last
   std::unique_ptr<AfterOpaque> After;

@@ -1,5 +1,10 @@
 #include "render/FrameContext.h"
 
+#include <vector>
+
+#include "parallel/RankBounds.h"
+#include "parallel/RankExchange.h"
+
 #include <cmath>
 
 #include <vtkActor.h>
@@ -38,23 +43,29 @@ FrameContext frameContext(const DeferredSettings& s, double sceneRadius, Falloff
   return c;
 }
 
-double radiusFromVisibleBounds(vtkRenderer* renderer) {
+double radiusFromVisibleBounds(vtkRenderer* renderer, RankExchange* ranks) {
   double b[6];
-  renderer->ComputeVisiblePropBounds(b);
+  visiblePropBounds(renderer, ranks, b);
   const double diag = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
                                 (b[5] - b[4]) * (b[5] - b[4]));
   return (b[0] <= b[1] && std::isfinite(diag) && diag > 0.0) ? 0.1 * diag : 1.0;
 }
 
 FrameContext resolveFrameContext(const DeferredSettings& s, double sceneRadius, Falloff sceneFalloff,
-                                 vtkRenderer* renderer) {
+                                 vtkRenderer* renderer, RankExchange* ranks) {
   FrameContext c = frameContext(s, sceneRadius, sceneFalloff);
-  if (!(c.radius > 0.0)) c.radius = radiusFromVisibleBounds(renderer);
+  c.ranks = isParallel(ranks) ? ranks : nullptr;
+  if (!(c.radius > 0.0)) c.radius = radiusFromVisibleBounds(renderer, c.ranks);
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
   while (vtkProp* p = props->GetNextProp(it))
     if (p->GetVisibility() && (!propCastsAO(p) || drawsNonSurfaces(p))) c.hasNonCasters = true;
+  if (c.ranks) {  // one plan on every rank
+    std::vector<int> none{c.hasNonCasters ? 0 : 1};
+    c.ranks->minimum(none);
+    c.hasNonCasters = none[0] == 0;
+  }
   return c;
 }
 

@@ -25,6 +25,8 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include "parallel/RankExchange.h"
+#include "parallel/RankMeshes.h"
 #include "render/ActorKeys.h"
 
 namespace aokit {
@@ -122,12 +124,15 @@ void glyphInstances(vtkGlyph3DMapper* m, vtkDataSet* input, vtkProp* prop, const
     for (int a = 0; a < 3; ++a) instance[a] *= s[a];
     instance[3] = glm::dvec4(p[0], p[1], p[2], 1.0);
     out.push_back({prop, poly, world * instance});
+    out.back().leaf = -1;
   }
 }
 
 // Visible polydata leaves of a composite, visibility inherited as vtkCompositePolyDataMapper2 does.
+// `leaf` counts every polydata leaf, empty and hidden ones too, so that the same leaf has the same
+// number on every rank of a parallel renderer (parallel/RankMeshes.h).
 void compositeLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* attributes, bool visible, vtkProp* prop,
-                     const glm::dmat4& world, std::vector<PropMesh>& out) {
+                     const glm::dmat4& world, int& leaf, std::vector<PropMesh>& out) {
   if (attributes && attributes->HasBlockVisibility(node)) visible = attributes->GetBlockVisibility(node);
   if (auto* tree = vtkDataObjectTree::SafeDownCast(node)) {
     vtkSmartPointer<vtkDataObjectTreeIterator> it = vtkSmartPointer<vtkDataObjectTreeIterator>::Take(tree->NewTreeIterator());
@@ -135,14 +140,22 @@ void compositeLeaves(vtkDataObject* node, vtkCompositeDataDisplayAttributes* att
     it->TraverseSubTreeOff();
     it->SkipEmptyNodesOn();
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-      compositeLeaves(it->GetCurrentDataObject(), attributes, visible, prop, world, out);
+      compositeLeaves(it->GetCurrentDataObject(), attributes, visible, prop, world, leaf, out);
     return;
   }
   auto* poly = vtkPolyData::SafeDownCast(node);
-  if (visible && poly && poly->GetNumberOfPoints() > 0) out.push_back({prop, poly, world});
+  if (!poly) return;
+  const int mine = leaf++;
+  if (visible && poly->GetNumberOfPoints() > 0) {
+    out.push_back({prop, poly, world});
+    out.back().leaf = mine;
+  }
 }
 
 }  // namespace
+
+PropMeshes::PropMeshes(std::string family) : family_(std::move(family)) {}
+PropMeshes::~PropMeshes() = default;
 
 std::size_t PropMeshes::warnings() const {
   return static_cast<std::size_t>(std::count_if(warned_.begin(), warned_.end(), [](const auto& p) { return p != nullptr; }));
@@ -191,7 +204,8 @@ void PropMeshes::meshesOf(vtkProp* prop, const glm::dmat4& world, bool part, std
   }
   if (auto* tree = vtkDataObjectTree::SafeDownCast(input)) {
     auto* composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
-    compositeLeaves(tree, composite ? composite->GetCompositeDataDisplayAttributes() : nullptr, true, prop, world, out);
+    int leaf = 0;
+    compositeLeaves(tree, composite ? composite->GetCompositeDataDisplayAttributes() : nullptr, true, prop, world, leaf, out);
     return;
   }
   if (auto* ds = vtkDataSet::SafeDownCast(input); ds && vtkDataSetMapper::SafeDownCast(mapper)) {
@@ -212,7 +226,15 @@ vtkPolyData* PropMeshes::surfaceOf(vtkMapper* mapper, vtkDataSet* input) {
   return it->filter->GetOutput();
 }
 
-std::vector<PropMesh> PropMeshes::collect(vtkRenderer* renderer) {
+std::vector<PropMesh> PropMeshes::collect(vtkRenderer* renderer, RankExchange* ranks) {
+  std::vector<PropMesh> local = collectLocal(renderer);
+  exchanged_ = 0;
+  if (!isParallel(ranks)) return local;
+  if (!ranks_) ranks_ = std::make_unique<RankMeshes>();
+  return ranks_->merge(renderer, local, *ranks, exchanged_);
+}
+
+std::vector<PropMesh> PropMeshes::collectLocal(vtkRenderer* renderer) {
   std::vector<PropMesh> out;
   for (vtkProp* prop : casterProps(renderer)) {
     // Parts of assemblies: each leaf of each path, with the path's matrix.
@@ -223,12 +245,15 @@ std::vector<PropMesh> PropMeshes::collect(vtkRenderer* renderer) {
       add(prop, prop, matrixOf(prop), false, out);
       continue;
     }
-    for (; path; path = prop->GetNextPath()) {
+    for (int ordinal = 0; path; path = prop->GetNextPath(), ++ordinal) {
       vtkAssemblyNode* leaf = path->GetLastNode();
       vtkProp* part = leaf->GetViewProp();
       if (!part->GetVisibility()) continue;
       vtkMatrix4x4* m = leaf->GetMatrix();
+      const std::size_t first = out.size();
       add(part, prop, m ? glmFromVtk(m->GetData()) : matrixOf(part), true, out);
+      for (std::size_t i = first; i < out.size(); ++i)
+        if (out[i].leaf >= 0) out[i].leaf += ordinal * kLeavesPerPart;
     }
   }
   return out;

@@ -14,6 +14,7 @@
 // Any other visible prop that a family would have to cast (an image actor, a volume, a mapper
 // over non-geometric data) gets one warning naming it, once per collector, and casts nothing.
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,13 +39,26 @@ struct PropMesh {
                               // GetBounds() are this mesh's world bounds)
   vtkProp* keys = nullptr;    // the prop whose keys (ActorKeys.h) the draw carries: the prop, or for
                               // parts the assembly (VTK hands its keys to its parts as they draw)
+  int leaf = 0;               // which mesh of `keys` it is: a composite's polydata leaf (empty and
+                              // hidden leaves counted), plus kLeavesPerPart times an assembly part's
+                              // path; -1 for a glyph instance
 };
+
+constexpr int kLeavesPerPart = 1 << 16;
+
+class RankExchange;
+class RankMeshes;
 
 class PropMeshes {
  public:
-  explicit PropMeshes(std::string family) : family_(std::move(family)) {}
-  // The meshes of the renderer's visible props that cast AO (ActorKeys.h), in prop order.
-  std::vector<PropMesh> collect(vtkRenderer* renderer);
+  explicit PropMeshes(std::string family);
+  ~PropMeshes();
+  // The meshes of the renderer's visible props that cast AO (ActorKeys.h), in prop order. With
+  // the ranks of a parallel renderer: every rank's meshes, each one's pieces merged into the whole
+  // (parallel/RankMeshes.h); every rank must call it in the same frames.
+  std::vector<PropMesh> collect(vtkRenderer* renderer, RankExchange* ranks = nullptr);
+  // Bytes this rank sent to the others in the last collect() (0 in one process).
+  std::size_t exchangedBytes() const { return exchanged_; }
   // Props warned about so far (still alive).
   std::size_t warnings() const;
 
@@ -59,7 +73,11 @@ class PropMeshes {
     vtkSmartPointer<vtkDataSetSurfaceFilter> filter;
   };
 
+  std::vector<PropMesh> collectLocal(vtkRenderer* renderer);
+
   std::string family_;
+  std::unique_ptr<RankMeshes> ranks_;
+  std::size_t exchanged_ = 0;
   std::vector<vtkWeakPointer<vtkProp>> warned_;  // weak: a new prop at an old address warns too
   std::vector<Surface> surfaces_;                // dropped with their mapper
 };

@@ -51,8 +51,9 @@ std::vector<CasterDraw> HybridVoxelStage::draws(const FrameCasters& casters, con
 }
 
 void HybridVoxelStage::voxelize(vtkRenderer* renderer, vtkOpenGLRenderWindow* renWin, const HybridSettings& s,
-                                const FrameContext& context) {
-  const FrameCasters casters = gatherCasters(renderer, meshes_);
+                                FrameContext& context) {
+  const FrameCasters casters = gatherCasters(renderer, meshes_, context.ranks);
+  context.exchangedBytes += meshes_.exchangedBytes();
   voxelized_ = voxelizedStatic_ = 0;
   hasGrid_ = false;
   constants_.rays = s.rays;  // the march still runs (AO 0): its pass count needs these
@@ -60,7 +61,7 @@ void HybridVoxelStage::voxelize(vtkRenderer* renderer, vtkOpenGLRenderWindow* re
   if (s.staticBake) {
     voxelizeStaticDynamic(renderer, renWin, s, context, casters);
   } else {
-    region_ = regions_.get(frameView(renderer), casters.bounds, context.radius, s);
+    region_ = regions_.get(frameView(renderer, context.ranks), casters.bounds, context.radius, s);
     if (!region_.empty) {
       const std::vector<CasterDraw> d = draws(casters, region_.casters);
       voxelizer_->voxelize(renWin, region_.frame, d, voxelizeMethodFor(s.frame), s.solid);
@@ -76,7 +77,7 @@ void HybridVoxelStage::voxelizeStaticDynamic(vtkRenderer* renderer, vtkOpenGLRen
                                              const HybridSettings& s, const FrameContext& context,
                                              const FrameCasters& casters) {
   const StaticDynamicPlan& plan =
-      plans_.get(frameView(renderer), casters.bounds, staticFlags(casters), context.radius, s);
+      plans_.get(frameView(renderer, context.ranks), casters.bounds, staticFlags(casters), context.radius, s);
   region_ = plan.region;
   zones_ = plan.zones;
   if (plan.empty) return;

@@ -38,9 +38,10 @@ class HybridVoxelStage {
   void plan(DeferredPlan& plan, vtkOpenGLRenderWindow* renWin, const HybridSettings& s);
   // Voxelizes this frame's casters; the march's constants for the grid (rays and steps set even
   // when no caster is near the view, AO 0 then). Throws std::invalid_argument when the camera is
-  // degenerate or the grid exceeds the context's texture size.
+  // degenerate or the grid exceeds the context's texture size. With the context's ranks (a
+  // parallel renderer), every rank's casters; the bytes sent are added to the context.
   void voxelize(vtkRenderer* renderer, vtkOpenGLRenderWindow* renWin, const HybridSettings& s,
-                const FrameContext& context);
+                FrameContext& context);
   // Binds the grid (and static grid, zones) to p's samplers and uniforms; unbind() after drawing.
   void bind(vtkShaderProgram* p, vtkOpenGLRenderWindow* renWin, bool staticMode);
   void unbind(bool staticMode);

@@ -8,6 +8,8 @@
 #include <vtkProp.h>
 #include <vtkRenderer.h>
 
+#include "parallel/RankBounds.h"
+
 #include "render/ActorKeys.h"
 #include "voxel/CasterBuffers.h"
 
@@ -65,9 +67,9 @@ bool FrameView::operator==(const FrameView& o) const {
          parallelScale == o.parallelScale && aspect == o.aspect && sameBounds(scene, o.scene);
 }
 
-FrameCasters gatherCasters(vtkRenderer* renderer, PropMeshes& meshes) {
+FrameCasters gatherCasters(vtkRenderer* renderer, PropMeshes& meshes, RankExchange* ranks) {
   FrameCasters out;
-  for (const PropMesh& m : meshes.collect(renderer)) {
+  for (const PropMesh& m : meshes.collect(renderer, ranks)) {
     out.props.push_back(m.keys);  // the keys the draw carries (static or dynamic)
     out.polys.push_back(m.poly);
     out.matrices.push_back(m.modelToWorld);
@@ -76,7 +78,7 @@ FrameCasters gatherCasters(vtkRenderer* renderer, PropMeshes& meshes) {
   return out;
 }
 
-FrameView frameView(vtkRenderer* renderer) {
+FrameView frameView(vtkRenderer* renderer, RankExchange* ranks) {
   FrameView v;
   vtkCamera* cam = renderer->GetActiveCamera();
   double p[3], f[3], u[3];
@@ -94,7 +96,7 @@ FrameView frameView(vtkRenderer* renderer) {
   v.parallel = cam->GetParallelProjection() != 0;
   v.parallelScale = cam->GetParallelScale();
   double b[6];
-  renderer->ComputeVisiblePropBounds(b);
+  visiblePropBounds(renderer, ranks, b);
   v.scene = fromVtk(b);
   return v;
 }

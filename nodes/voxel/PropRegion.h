@@ -32,7 +32,8 @@ struct FrameCasters {
 
 // Every mesh the renderer's casting props draw (composite blocks, glyph instances, assembly parts
 // included: render/PropMeshes.h, which warns once about props it cannot read).
-FrameCasters gatherCasters(vtkRenderer* renderer, PropMeshes& meshes);
+// With the ranks of a parallel renderer: every rank's meshes (parallel/RankMeshes.h).
+FrameCasters gatherCasters(vtkRenderer* renderer, PropMeshes& meshes, RankExchange* ranks = nullptr);
 
 // The renderer's view as the region needs it.
 struct FrameView {
@@ -44,7 +45,8 @@ struct FrameView {
   bool operator==(const FrameView& o) const;
 };
 
-FrameView frameView(vtkRenderer* renderer);
+// Its scene box is every rank's with the ranks of a parallel renderer.
+FrameView frameView(vtkRenderer* renderer, RankExchange* ranks = nullptr);
 
 // The region (settings validated first; std::invalid_argument on bad ones).
 VoxelRegion computePropRegion(const FrameView& view, const std::vector<Bounds>& casterBounds, double R,

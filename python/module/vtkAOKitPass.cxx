@@ -37,6 +37,8 @@ void vtkAOKitPass::PrintSelf(ostream& os, vtkIndent indent) {
   if (Impl->family) Impl->family->pass()->PrintSelf(os, indent.GetNextIndent());
 }
 
+aokit::DeferredAOPass* vtkAOKitPass::GetKitPass() { return Impl->family ? Impl->family->pass() : nullptr; }
+
 std::string vtkAOKitPass::GetMethod() { return Impl->family ? Impl->family->name() : ""; }
 
 bool vtkAOKitPass::SetSetting(const char* key, const char* value) {

@@ -11,6 +11,11 @@
 #include "aokitVTKModule.h"
 #include <vtkRenderPass.h>
 
+#ifndef __VTK_WRAP__
+namespace aokit {
+class DeferredAOPass;
+}
+#endif
 class vtkFloatArray;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -75,6 +80,11 @@ public:
   double GetAOMilliseconds();
   // GPU bytes the pass holds (G-buffers, AO targets, the family's own).
   double GetMemoryBytes();
+
+#ifndef __VTK_WRAP__
+  // The kit's pass it forwards to (C++ only: ParaView's plugin hands it the ranks).
+  aokit::DeferredAOPass* GetKitPass();
+#endif
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;

@@ -106,25 +106,3 @@ def test_a_bad_setting_is_one_error_line(tmp_path):
     assert len(lines) == 2, out
     assert "samples must be an integer in 1..64, got '-3'" in lines[0]
     assert "AOMethod must be 0 (none), 1 (obscurance), 2 (field) or 3 (hybrid), got 7" in lines[1]
-
-
-def test_under_mpi_the_view_says_once_that_ranks_do_not_share_occluders(tmp_path):
-    # Item 3 of the plugin's issue is not built: each rank's AO sees its own piece. That must be
-    # said, once, not found as a seam.
-    script = tmp_path / "ranks.py"
-    out = tmp_path / "ao.f32"
-    script.write_text("from paraview.simple import *\n"
-                      "v = CreateView('AOKitRenderView')\nv.ViewSize = [200, 150]\n"
-                      "v.AOOutputFile = %r\n" % str(out) +
-                      "Show(Sphere(), v)\nRender(v)\nRender(v)\n")
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    one = subprocess.run([PVBATCH, str(script)], capture_output=True, text=True, timeout=120)
-    two = subprocess.run(["mpiexec", "-n", "2", PVBATCH, str(script)], capture_output=True, text=True,
-                         timeout=300, env=env)
-    assert one.returncode == 0 and two.returncode == 0, one.stderr[-1500:] + two.stderr[-1500:]
-    warning = "aokit: AOKitRenderView on 2 ranks: each rank's AO sees that rank's own data only"
-    assert "ranks:" not in one.stdout + one.stderr
-    assert read_f32(str(out)).shape == (150, 200)  # one process: the file itself
-    for rank in range(2):  # under MPI: each rank's own pixels, one file each
-        assert read_f32(str(out) + ".rank%d" % rank).shape == (150, 200)
-    assert (two.stdout + two.stderr).count(warning) == 1, two.stdout + two.stderr

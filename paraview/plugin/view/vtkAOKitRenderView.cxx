@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,9 @@
 #include <vtkPVSynchronizedRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include "ControllerRanks.h"
 #include "output/ImageFiles.h"
+#include "render/DeferredAOPass.h"
 #include "settings/SettingInfo.h"
 #include "vtkAOKitFieldPass.h"
 #include "vtkAOKitHybridPass.h"
@@ -31,7 +34,7 @@ struct vtkAOKitRenderView::Internals {
   double frameRadius = 0.0;
   std::string text;  // GetAOSetting's return value
   std::string outputFile;
-  bool warnedRanks = false;
+  std::shared_ptr<ControllerRanks> ranks;  // under MPI: every pass composites and gathers through it
 
   vtkAOKitPass* active() const { return method == 0 ? nullptr : passes[method - 1].Get(); }
   vtkAOKitPass* family(const std::string& name) const {
@@ -49,6 +52,12 @@ void reportError(const std::string& message) { vtkOutputWindowDisplayErrorText((
 vtkAOKitRenderView::vtkAOKitRenderView() : Impl(new Internals) {
   // vtkPVView has no virtual Initialize() in 5.11: the pass goes in here.
   this->SynchronizedRenderers->SetRenderPass(Impl->active());
+  // Under MPI every rank's AO sees every rank's data (parallel/RankExchange.h).
+  vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
+  if (c && c->GetNumberOfProcesses() > 1) {
+    Impl->ranks = std::make_shared<ControllerRanks>(c);
+    for (const auto& p : Impl->passes) p->GetKitPass()->SetRankExchange(Impl->ranks);
+  }
 }
 
 vtkAOKitRenderView::~vtkAOKitRenderView() { delete Impl; }
@@ -77,6 +86,10 @@ void vtkAOKitRenderView::SetAORadius(double r) {
 
 double vtkAOKitRenderView::GetAORadius() { return Impl->radius; }
 double vtkAOKitRenderView::GetFrameRadius() { return Impl->frameRadius; }
+double vtkAOKitRenderView::GetAOExchangedBytes() {
+  vtkAOKitPass* pass = Impl->active();
+  return pass ? static_cast<double>(pass->GetKitPass()->GetExchangedBytes()) : 0.0;
+}
 
 void vtkAOKitRenderView::SetAOOutputFile(const char* path) {
   Impl->outputFile = path ? path : "";
@@ -117,7 +130,8 @@ void vtkAOKitRenderView::SetFamilySetting(const char* family, const char* key, c
 
 void vtkAOKitRenderView::Render(bool interactive, bool skip_rendering) {
   if (vtkAOKitPass* pass = Impl->active()) {
-    WarnAboutRanks();
+    // The passes' exchanges are collective: IceT must run them on ranks with nothing in view too.
+    if (Impl->ranks) this->RenderEmptyImages = true;
     // GeometryBounds holds every rank's visible data, so each rank uses the same R.
     double r = Impl->radius;
     if (r == 0.0 && this->GeometryBounds.IsValid()) r = 0.1 * this->GeometryBounds.GetDiagonalLength();
@@ -128,20 +142,10 @@ void vtkAOKitRenderView::Render(bool interactive, bool skip_rendering) {
   if (!interactive && !skip_rendering && !Impl->outputFile.empty()) WriteAO();
 }
 
-// The pass runs on each rank before compositing, on that rank's geometry: occlusion between
-// pieces on different ranks is missing. Said once, by rank 0, rather than left to be found.
-void vtkAOKitRenderView::WarnAboutRanks() {
-  vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
-  const int ranks = c ? c->GetNumberOfProcesses() : 1;
-  if (ranks < 2 || Impl->warnedRanks) return;
-  Impl->warnedRanks = true;
-  if (c->GetLocalProcessId() != 0) return;
-  vtkOutputWindowDisplayWarningText(("aokit: AOKitRenderView on " + std::to_string(ranks) +
-      " ranks: each rank's AO sees that rank's own data only (no occlusion between pieces on "
-      "different ranks, a seam where they meet); one process is exact").c_str());
-}
-
 void vtkAOKitRenderView::WriteAO() {
+  // Under MPI every rank holds the same composited AO: rank 0 writes it.
+  vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
+  if (c && c->GetLocalProcessId() != 0) return;
   vtkAOKitPass* pass = Impl->active();
   if (!pass) {
     reportError("AOOutputFile: AOMethod is none, no AO to write");
@@ -154,11 +158,7 @@ void vtkAOKitRenderView::WriteAO() {
     return;
   }
   const std::vector<float> values(ao->GetPointer(0), ao->GetPointer(0) + ao->GetNumberOfValues());
-  // Under MPI each rank holds the AO of its own pixels before compositing: one file per rank.
-  vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
-  const std::string path = (c && c->GetNumberOfProcesses() > 1)
-                               ? Impl->outputFile + ".rank" + std::to_string(c->GetLocalProcessId())
-                               : Impl->outputFile;
+  const std::string& path = Impl->outputFile;
   const std::string tmp = path + ".part";
   try {
     aokit::writeFloatImage(tmp, size[0], size[1], values);
