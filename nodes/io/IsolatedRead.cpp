@@ -14,6 +14,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <vtkSMPTools.h>
+
 namespace aokit {
 namespace {
 
@@ -84,6 +86,9 @@ void capChildMemory(std::uintmax_t fileSize) {
     dup2(devNull, STDERR_FILENO);
   }
   capChildMemory(fileSize);
+  // fork() copies only this thread: the parent's TBB workers, and any lock one held at that moment,
+  // are gone here, so a reader's vtkSMPTools::For (array ranges) could wait for them forever.
+  vtkSMPTools::SetBackend("Sequential");
   std::string out;
   try {
     ReadResult r = read();
