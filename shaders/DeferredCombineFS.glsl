@@ -3,7 +3,8 @@
 // DeferredAOPass, combine stage: brings the family's AO to full resolution and multiplies the lit
 // colour by 1 - AO where the prop receives AO (as vtkSSAOPass does, the G-buffer keeps no separate
 // ambient term), and writes the G-buffer depth back so later passes still depth-test. With
-// AO_MULTIPLY it writes 1 - AO only, for blending onto the window's own multisampled frame. With
+// AO_MULTIPLY it writes 1 - AO only, for blending onto the window's own multisampled frame; with
+// AO_BLEND 1 - AO and the depth, for blending onto the G-buffer's colour blitted to the frame. With
 // AO_OUTPUT it writes the AO itself (the read-back: -1, or a = 0, on background); AO_DEBUG_VIEW
 // selects a view. Upsampling (AO_UPSAMPLE): 0 none (full resolution), 1 the bilinear 2x2 taps
 // around the pixel that lie within a depth tolerance of it, 2 the vertical pass of the separable
@@ -126,8 +127,12 @@ void main()
   ivec2 pix = ivec2(texCoord * vec2(aoScreen));  // screen pixel
   ivec2 g = pix + aoGuard;                        // its G-buffer texel
   float depth = texelFetch(aoDepth, g, 0).r;
+#if AO_BLEND
+  if (depth >= 1.0) discard;  // background: its colour is the blitted one, its depth the cleared one
+#endif
   bool covered = aoPackedNormal(g).w > 0.5;
-  bool receives = covered && (aoFlags(g) & AO_FLAG_RECEIVES) != 0;
+  // Only surfaces carry flags (0 where no surface was drawn): no normal read for the frame's combine.
+  bool receives = (aoFlags(g) & AO_FLAG_RECEIVES) != 0;
   vec3 p = aoViewPosition(g);
   AO_TYPE ao = receives ? aoAt(pix, g, p) : AO_TYPE(0.0);
 #if AO_BAKED
@@ -138,6 +143,9 @@ void main()
 #endif
 #if AO_MULTIPLY
   gl_FragData[0] = vec4(vec3(1.0) - vec3(ao), 1.0);
+#elif AO_BLEND
+  gl_FragData[0] = vec4(vec3(1.0) - vec3(ao), 1.0);
+  gl_FragDepth = depth;
 #elif AO_OUTPUT
 #if AO_TRANSFER
   gl_FragData[0] = vec4(ao, covered ? 1.0 : 0.0);

@@ -114,17 +114,18 @@ std::string DeferredAOPass::CombineDefines(const DeferredConfig& c, CombineOutpu
          "\n#define AO_UPSAMPLE " + std::to_string(upsample) +
          "\n#define AO_OUTPUT " + std::to_string(output == CombineOutput::AO ? 1 : 0) +
          "\n#define AO_MULTIPLY " + std::to_string(output == CombineOutput::Multiply ? 1 : 0) +
+         "\n#define AO_BLEND " + std::to_string(output == CombineOutput::Blend ? 1 : 0) +
          "\n#define AO_BAKED " + std::to_string(c.bakedAO ? 1 : 0) +
          "\n#define AO_DEBUG_VIEW " + std::to_string(view) + "\n";
 }
 
 // Builds every program of the plan and the pipeline's own; the name of the first that fails.
-const char* DeferredAOPass::Ready(const DeferredPlan& plan, bool multiply) {
+const char* DeferredAOPass::Ready(const DeferredPlan& plan, bool multiply, CombineOutput combine) {
   for (const auto& [stage, defines] : plan.stages)
     if (!stage->ready(Frame.renWin, defines)) return stage->name().c_str();
   for (const auto& [name, build] : plan.programs)
     if (!build()) return name.c_str();
-  if (!CombineStage.ready(Frame.renWin, CombineDefines(Frame.config, CombineOutput::Frame))) return "combine";
+  if (!CombineStage.ready(Frame.renWin, CombineDefines(Frame.config, combine))) return "combine";
   if (multiply && !MultiplyStage.ready(Frame.renWin, CombineDefines(Frame.config, CombineOutput::Multiply)))
     return "AO multiply";
   return nullptr;
@@ -201,8 +202,13 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
   gbuffer->SetBakedAO(Frame.config.bakedAO);
   gbuffer->SetFacetNormals(Frame.config.facetNormals);
   const bool multiply = Multisampled(r, Frame.config);
+  // The colour reaches a single-sampled frame by a blit; the combine then shades only covered
+  // pixels, blended onto it (CombineOutput::Blend).
+  GLint drawSamples = 0;
+  glGetIntegerv(GL_SAMPLES, &drawSamples);
+  const bool blit = !multiply && drawSamples == 0 && Frame.config.view == DebugView::Off;
   Timer.begin();
-  const char* failed = Ready(plan, multiply);
+  const char* failed = Ready(plan, multiply, blit ? CombineOutput::Blend : CombineOutput::Frame);
   if (failed && ReportedFailure != failed + CombineDefines(Frame.config, CombineOutput::Frame)) {
     vtkErrorMacro("the " << failed << " stage did not compile (log above); showing the frame without AO");
     ReportedFailure = failed + CombineDefines(Frame.config, CombineOutput::Frame);
@@ -269,6 +275,17 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
     state->vtkglDisable(GL_BLEND);
     state->vtkglEnable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_TRUE);
+  } else if (blit) {
+    // The G-buffer's colour, then each pixel a surface (or line) was drawn on multiplied by its
+    // 1 - AO, with its depth; the background's depth is cleared and its pixels discarded unshaded.
+    gbuffer->BlitColorToFramebuffer(renWin, x, y);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    state->vtkglEnable(GL_BLEND);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+    state->vtkglBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ZERO, GL_ONE);
+    v.hasFrame = Combine(v, CombineStage, CombineOutput::Blend, [&] { CombineStage.render(); });
+    state->vtkglDisable(GL_BLEND);
   } else {
     v.hasFrame = Combine(v, CombineStage, CombineOutput::Frame, [&] { CombineStage.render(); });
   }

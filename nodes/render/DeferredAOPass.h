@@ -147,16 +147,17 @@ class DeferredAOPass : public vtkOpenGLRenderPass {
 
  private:
   struct View;  // one renderer's G-buffer, targets and last frame
+  // What the combine writes. Frame: the lit colour times 1 - AO, and depth; Blend: 1 - AO and
+  // depth on covered pixels, blended onto the colour blitted before; Multiply: 1 - AO onto VTK's
+  // multisampled frame; AO: the AO alone (ReadAO).
+  enum class CombineOutput { Frame, AO, Multiply, Blend };
   View& ViewOf(vtkRenderer* renderer);
   const View* FindView(vtkRenderer* renderer) const;
-  const char* Ready(const DeferredPlan& plan, bool multiply);
+  const char* Ready(const DeferredPlan& plan, bool multiply, CombineOutput combine);
   bool Multisampled(vtkRenderer* r, const DeferredConfig& c);
   void AllocateTargets(View& v, bool resultTarget);
   void RenderAfterOpaque(const vtkRenderState* s);
   vtkSmartPointer<vtkRenderPass> GBufferDelegate() const;
-  // What the combine writes: the frame, the AO alone (ReadAO), or 1 - AO to multiply the window's
-  // own multisampled frame by.
-  enum class CombineOutput { Frame, AO, Multiply };
   std::string CombineDefines(const DeferredConfig& c, CombineOutput output) const;
   // Binds the combine program of that output and its inputs, then calls draw().
   template <class Draw>

@@ -268,6 +268,16 @@ void GBufferPass::CopyToFramebuffer(vtkOpenGLRenderWindow* renWin) {
   state->vtkglDepthFunc(GL_LEQUAL);
 }
 
+void GBufferPass::BlitColorToFramebuffer(vtkOpenGLRenderWindow* renWin, int x, int y) {
+  vtkOpenGLState* state = renWin->GetState();
+  state->PushReadFramebufferBinding();
+  Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + Attachment(GBufferTarget::Color));
+  const int w = GetScreenWidth(), h = GetScreenHeight();
+  glBlitFramebuffer(GuardX, GuardY, GuardX + w, GuardY + h, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  state->PopReadFramebufferBinding();
+}
+
 bool GBufferPass::PreReplaceShaderValues(std::string& vs, std::string&, std::string& fs, vtkAbstractMapper* mapper,
                                          vtkProp*) {
   // Markers the mapper leaves alone: our declarations beside the outputs, our code last in main

@@ -73,6 +73,10 @@ class GBufferPass : public vtkOpenGLRenderPass {
   // Copies the last frame's colour and depth into the current framebuffer's viewport (what
   // SetCopyToOutput does after Render; for callers whose own stages failed).
   void CopyToFramebuffer(vtkOpenGLRenderWindow* renWin);
+  // Copies the last frame's colour (not depth: the output's depth format may differ, and a blit
+  // moves depth only between equal formats) into the bound draw framebuffer at (x, y), the
+  // viewport's origin, with one glBlitFramebuffer. The draw framebuffer must be single-sampled.
+  void BlitColorToFramebuffer(vtkOpenGLRenderWindow* renWin, int x, int y);
 
   bool PreReplaceShaderValues(std::string& vs, std::string& gs, std::string& fs, vtkAbstractMapper* mapper,
                               vtkProp* prop) override;
