@@ -4,7 +4,11 @@
 #include <chrono>
 #include <csignal>
 #include <cstring>
+#include <algorithm>
+#include <cstdlib>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <new>
 #include <stdexcept>
 
@@ -115,53 +119,97 @@ void capChildMemory(std::uintmax_t fileSize) {
   _exit(0);  // no atexit handlers or static destructors: they belong to the parent
 }
 
+// CPU time the process has used, in clock ticks (utime + stime of /proc/<pid>/stat); -1 if unknown.
+long cpuTicks(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t close = text.rfind(')');  // the command name may hold spaces
+  if (close == std::string::npos) return -1;
+  std::istringstream fields(text.substr(close + 2));
+  std::string field;
+  long utime = -1, stime = -1;
+  for (int i = 3; i <= 15 && fields >> field; ++i) {
+    if (i == 14) utime = std::atol(field.c_str());
+    if (i == 15) stime = std::atol(field.c_str());
+  }
+  return utime < 0 || stime < 0 ? -1 : utime + stime;
+}
+
+enum class ChildEnd { Answered, TimedOut, Stuck };
+
+// Collects the child's answer until it closes the pipe, its time is up, or it has used no CPU for
+// a while without answering (a lock another thread of this process held at fork() time is never
+// released in the child: fork copies the calling thread only).
+ChildEnd collect(int fd, pid_t pid, std::chrono::seconds limit, std::string& in) {
+  using Clock = std::chrono::steady_clock;
+  const auto deadline = Clock::now() + limit;
+  const auto idleLimit = std::chrono::seconds(3);
+  long ticks = cpuTicks(pid);
+  auto lastProgress = Clock::now();
+  char buf[65536];
+  for (;;) {
+    const auto now = Clock::now();
+    if (now >= deadline) return ChildEnd::TimedOut;
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
+    pollfd p{fd, POLLIN, 0};
+    const int ready = poll(&p, 1, static_cast<int>(std::min<long>(left.count(), 500)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) {
+      const long t = cpuTicks(pid);
+      if (t != ticks || t < 0) {
+        ticks = t;
+        lastProgress = Clock::now();
+      } else if (Clock::now() - lastProgress >= idleLimit) {
+        return ChildEnd::Stuck;
+      }
+      continue;
+    }
+    if (ready < 0) continue;
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return ChildEnd::Answered;
+    in.append(buf, static_cast<std::size_t>(n));
+    lastProgress = Clock::now();
+  }
+}
+
 }  // namespace
 
 ReadResult readIsolated(const std::function<ReadResult()>& read, std::uintmax_t fileSize) {
-  int fds[2];
-  if (pipe2(fds, O_CLOEXEC) != 0) return read();
-  const pid_t pid = fork();
-  if (pid < 0) {
-    close(fds[0]);
-    close(fds[1]);
-    return read();
-  }
-  if (pid == 0) {
-    close(fds[0]);
-    runChild(fds[1], read, fileSize);
-  }
-  close(fds[1]);
-
-  // Collect the child's answer until it closes the pipe or its time is up.
   const auto limit = std::chrono::seconds(30 + static_cast<long>(fileSize >> 20));  // + 1 s per MiB
-  const auto deadline = std::chrono::steady_clock::now() + limit;
   std::string in;
-  bool timedOut = false;
-  char buf[65536];
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) {
-      timedOut = true;
-      break;
-    }
-    pollfd p{fds[0], POLLIN, 0};
-    const int ready = poll(&p, 1, static_cast<int>(left.count()));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready <= 0) continue;  // timeout is checked above
-    const ssize_t n = ::read(fds[0], buf, sizeof buf);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    in.append(buf, static_cast<std::size_t>(n));
-  }
-  close(fds[0]);
-  if (timedOut) kill(pid, SIGKILL);
+  ChildEnd end = ChildEnd::Answered;
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  // A child that hangs is tried once more: the lock it waits on was held at the moment of that fork.
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) != 0) return read();
+    const pid_t pid = fork();
+    if (pid < 0) {
+      close(fds[0]);
+      close(fds[1]);
+      return read();
+    }
+    if (pid == 0) {
+      close(fds[0]);
+      runChild(fds[1], read, fileSize);
+    }
+    close(fds[1]);
+    in.clear();
+    end = collect(fds[0], pid, limit, in);
+    close(fds[0]);
+    if (end != ChildEnd::Answered) kill(pid, SIGKILL);
+    status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (end == ChildEnd::Answered) break;
   }
+  const bool timedOut = end != ChildEnd::Answered;
 
   ReadResult r;
   if (timedOut) {
-    r.why = "the reader did not finish within " + std::to_string(limit.count()) + " s";
+    r.why = end == ChildEnd::Stuck ? std::string("the reader stopped without an answer, twice")
+                                   : "the reader did not finish within " + std::to_string(limit.count()) + " s, twice";
     return r;
   }
   if (WIFSIGNALED(status)) {

@@ -3,6 +3,9 @@
 // readers do with corrupt files: VTK's legacy reader segfaults on some, its XML reader can spend
 // minutes filling a vector sized by a corrupt header, vtkPLYReader double-frees. The child's
 // memory is capped, its output silenced, its time bounded; the mesh comes back through a pipe.
+// fork() copies only the calling thread: a lock another thread held at that moment (TBB's
+// workers) stays held in the child, so the child reads with VTK's sequential SMP backend, and a
+// child that hangs (no CPU used for 3 s, or past its time) is killed and started once more.
 #include <cstdint>
 #include <functional>
 #include <string>
