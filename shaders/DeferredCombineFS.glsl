@@ -141,11 +141,11 @@ void main()
   // would round AO to a multiple of 2^-24).
   ao = receives ? ao + AO_TYPE(texelFetch(aoBaked, g, 0).r) * (AO_TYPE(1.0) - ao) : ao;
 #endif
-#if AO_MULTIPLY
+#if AO_MULTIPLY || AO_BLEND
   gl_FragData[0] = vec4(vec3(1.0) - vec3(ao), 1.0);
-#elif AO_BLEND
-  gl_FragData[0] = vec4(vec3(1.0) - vec3(ao), 1.0);
+#if AO_BLEND
   gl_FragDepth = depth;
+#endif
 #elif AO_OUTPUT
 #if AO_TRANSFER
   gl_FragData[0] = vec4(ao, covered ? 1.0 : 0.0);

@@ -39,6 +39,16 @@ void check(const DeferredConfig& c) {
   if (!(c.radius > 0.0)) throw std::invalid_argument("deferred AO: radius must be positive");
 }
 
+// The combine's 1 - AO multiplies the colour already in the frame; its alpha stays.
+template <class Draw>
+void multiplyOntoFrame(vtkOpenGLState* state, Draw&& draw) {
+  state->vtkglEnable(GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+  state->vtkglBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ZERO, GL_ONE);
+  draw();
+  state->vtkglDisable(GL_BLEND);
+}
+
 }  // namespace
 
 DeferredAOPass::DeferredAOPass()
@@ -268,11 +278,9 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
     state->vtkglScissor(x, y, w, h);
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_FALSE);
-    state->vtkglEnable(GL_BLEND);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-    state->vtkglBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ZERO, GL_ONE);
-    v.hasFrame = Combine(v, MultiplyStage, CombineOutput::Multiply, [&] { MultiplyStage.render(); });
-    state->vtkglDisable(GL_BLEND);
+    multiplyOntoFrame(state, [&] {
+      v.hasFrame = Combine(v, MultiplyStage, CombineOutput::Multiply, [&] { MultiplyStage.render(); });
+    });
     state->vtkglEnable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_TRUE);
   } else if (blit) {
@@ -281,11 +289,9 @@ void DeferredAOPass::Render(const vtkRenderState* s) {
     gbuffer->BlitColorToFramebuffer(renWin, x, y);
     state->vtkglClearDepth(1.0);
     state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-    state->vtkglEnable(GL_BLEND);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-    state->vtkglBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ZERO, GL_ONE);
-    v.hasFrame = Combine(v, CombineStage, CombineOutput::Blend, [&] { CombineStage.render(); });
-    state->vtkglDisable(GL_BLEND);
+    multiplyOntoFrame(state, [&] {
+      v.hasFrame = Combine(v, CombineStage, CombineOutput::Blend, [&] { CombineStage.render(); });
+    });
   } else {
     v.hasFrame = Combine(v, CombineStage, CombineOutput::Frame, [&] { CombineStage.render(); });
   }
