@@ -137,6 +137,53 @@ TEST(HybridFailureModes, ThinWallsAcrossTheGridsXAxisLeak) {
   EXPECT_LT(sum / 64, ceilingAO(H, R) + 0.03);
 }
 
+// A sheet without thickness (one face, as the open box's walls) is one voxel thick in the grid:
+// across x, steps of up to 2.5 voxels still cross it; at most one voxel a step (stride = 1) does
+// not. The sheet sits inside a voxel, not on a boundary, so the grid holds it in one layer.
+TEST(HybridFailureModes, SheetsWithoutThicknessNeedOneVoxelSteps) {
+  const double H = 0.5, R = 1.0;
+  Bounds region;
+  region.extend(glm::dvec3(-0.2, -1.5, -1.5));
+  region.extend(glm::dvec3(H + 0.6, 1.5, 1.5));
+  const VoxelFrame frame = VoxelFrame::fitting(region, 512);
+  Scene s;
+  // The plane's normal +z turned to +x; at the middle of a voxel along x.
+  const double x = frame.origin.x + (std::floor((H - frame.origin.x) / frame.voxelSize) + 0.5) * frame.voxelSize;
+  addPlaced(*s.root, makeGridPlane(6.0, 6.0, 1, 1), translation({x, 0.0, 0.0}) * rotation(90.0, {0, 1, 0}),
+            glm::vec3(1.0f));
+  const VoxelGrid grid = voxelizeInstances(collectInstances(*s.root), frame, VoxelizeMethod::ThreeAxis, true);
+  auto meanAO = [&](double stride) {
+    HybridSettings hs;
+    hs.gridResolution = 512;
+    hs.rays = 64;
+    hs.stride = stride;
+    const HybridMarchConstants c = makeHybridMarchConstants(hs, frameContext(hs.common, R, Falloff::Binary), frame);
+    double sum = 0.0;
+    for (int i = 0; i < 64; ++i) sum += marchHybridAO(grid, c, glm::vec3(0.0f, 0.013f * i - 0.4f, 0.007f * i), {1, 0, 0});
+    std::printf("  sheet across x, stride %.1f (%d steps): mean AO %.3f (closed form %.3f)\n", stride, c.steps,
+                sum / 64, ceilingAO(x, R));
+    return sum / 64;
+  };
+  EXPECT_LT(meanAO(2.5), ceilingAO(x, R) - 0.1);  // leaks
+  const double held = meanAO(1.0);
+  EXPECT_GT(held, ceilingAO(x, R) - 0.05);
+  EXPECT_LT(held, ceilingAO(x, R) + 0.03);
+}
+
+// On the open box (five single faces on a floor), the march over 2.5 voxels a step misses the
+// side and back walls from the floor inside (too little AO there); over one voxel it does not.
+TEST(HybridFailureModes, OpenBoxWallsHoldWithOneVoxelSteps) {
+  Rig rig("open-box");
+  double biasLong = 0.0, biasShort = 0.0;
+  const AOErrorMetrics longSteps = rig.run("stride=2.5", &biasLong);
+  const AOErrorMetrics shortSteps = rig.run("stride=1", &biasShort);
+  std::printf("open box: stride 2.5 RMSE %.4f (mean error %+.4f), stride 1 RMSE %.4f (%+.4f)\n", longSteps.rmse,
+              biasLong, shortSteps.rmse, biasShort);
+  EXPECT_LT(biasLong, -0.005);
+  EXPECT_LT(std::abs(biasShort), 0.006);
+  EXPECT_LT(shortSteps.rmse, 0.6 * longSteps.rmse);
+}
+
 // A region budget smaller than the view: receivers beyond the cut get no occlusion.
 TEST(HybridFailureModes, RegionBoundaryCutsOffTheFarField) {
   Rig rig("room");
