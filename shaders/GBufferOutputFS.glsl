@@ -9,6 +9,9 @@
   vec3 aokitFacet = cross(aokitDx, aokitDy);
   vec3 aokitToEye = aokitParallel != 0 ? vec3(0.0, 0.0, 1.0) : -vertexVC.xyz;
   aokitFacet *= dot(aokitFacet, aokitToEye) < 0.0 ? -1.0 : 1.0;
+  // The eye sees the side opposite the mesh's own normal (baked AO's back value): VTK turned that
+  // normal for back faces, so the turn undone is the mesh's normal, which then points away.
+  bool aokitBackSide = (dot(aokitNormal, aokitFacet) < 0.0) == gl_FrontFacing;
   aokitNormal *= dot(aokitNormal, aokitFacet) < 0.0 ? -1.0 : 1.0;
 #if AOKIT_GBUFFER_FACET
   // The hemisphere of the surface itself (the reference's): across a sharp edge with shared

@@ -4,6 +4,7 @@
 
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
+#include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLFramebufferObject.h>
@@ -109,6 +110,55 @@ TEST(BakedAO, ReachesTheFrameInterpolatedAndClearsAgain) {
   for (std::size_t i = 0; i < ao.size(); ++i)
     if (surfaces.covered[i]) worst = std::max(worst, static_cast<double>(std::abs(ao[i])));
   EXPECT_EQ(worst, 0.0);
+  view.window.renderer()->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(view.window.window());
+}
+
+// Two values a point (front, then back): the G-buffer takes the side the eye sees, the side of
+// the point's normal from above the floor, the other side from below it.
+TEST(BakedAO, TwoSidedValuesFollowTheSideSeen) {
+  Scene scene = makeBuiltinScene("sphere-plane");
+  SceneView view(scene, 200, 150);
+  const auto instances = collectInstances(*scene.root);
+  ASSERT_EQ(instances[0].geometry->name(), "floor");
+  vtkActor* floor = actorOfInstance(view.window.renderer(), instances[0].id);
+  ASSERT_NE(floor, nullptr);
+  const std::size_t n = instances[0].geometry->mesh()->positions.size();
+  std::vector<float> sides(n, 0.2f);
+  sides.resize(2 * n, 0.7f);
+  setBakedAO(floor, sides);
+  EXPECT_THROW(setBakedAO(floor, std::vector<float>(2 * n + 1, 0.0f)), std::invalid_argument);
+
+  vtkNew<BakedOnlyPass> pass;
+  view.window.renderer()->SetPass(pass);
+  auto floorValues = [&](double cameraZ, std::size_t& pixels) {
+    vtkCamera* camera = view.window.renderer()->GetActiveCamera();
+    camera->SetPosition(0.0, -6.5, cameraZ);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    view.window.renderer()->ResetCameraClippingRange();
+    const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
+    view.window.render();
+    std::vector<float> ao;
+    EXPECT_TRUE(pass->ReadAO(vtkOpenGLRenderWindow::SafeDownCast(view.window.window()), ao));
+    double lo = 1.0, hi = 0.0;
+    pixels = 0;
+    for (std::size_t i = 0; i < ao.size(); ++i) {
+      if (!surfaces.covered[i] || std::abs(surfaces.position[i].z) > 1e-3f) continue;
+      ++pixels;
+      lo = std::min(lo, static_cast<double>(ao[i]));
+      hi = std::max(hi, static_cast<double>(ao[i]));
+    }
+    return std::make_pair(lo, hi);
+  };
+  std::size_t above = 0, below = 0;
+  const auto front = floorValues(4.0, above), back = floorValues(-4.0, below);
+  EXPECT_GT(above, 5000u);
+  EXPECT_GT(below, 5000u);
+  EXPECT_NEAR(front.first, 0.2, 1e-3);
+  EXPECT_NEAR(front.second, 0.2, 1e-3);
+  EXPECT_NEAR(back.first, 0.7, 1e-3);
+  EXPECT_NEAR(back.second, 0.7, 1e-3);
   view.window.renderer()->SetPass(nullptr);
   pass->ReleaseGraphicsResources(view.window.window());
 }

@@ -274,3 +274,51 @@ TEST(SelfOcclusion, ConvexShapeAndWallOverFloor) {
   }
   EXPECT_GE(checked, 15);
 }
+
+// An open mesh's back side: a floor sheet facing down (z = 0) under a sphere of radius r whose
+// centre is d above it, baked as one mesh. The side facing up sees the sphere; with R beyond the
+// sphere's far side every ray at it counts, and straight below it the cosine-weighted measure of
+// the directions that hit it is sin^2 of its half-angle: (r / d)^2. The side facing down sees
+// nothing. bakeField bakes both sides for an open mesh, one for a closed one, and the file keeps them.
+TEST(SelfOcclusion, BackSideOfAnOpenSheetUnderASphere) {
+  const double r = 0.5, d = 1.0;
+  TriangleMesh mesh = *makeGridPlane(4.0, 4.0, 40, 40);
+  for (auto& t : mesh.triangles) std::swap(t.y, t.z);  // wound facing down
+  for (auto& n : mesh.normals) n = glm::vec3(0, 0, -1);
+  const std::size_t floorVertices = mesh.positions.size();
+  TriangleMesh ball = *makeUVSphere(r, 48, 24);
+  for (auto& p : ball.positions) p.z += static_cast<float>(d);
+  mesh.append(ball);
+  const std::vector<float> front = bakeVertexOcclusion(mesh, 2.0, Falloff::Binary, 4096, 2);
+  const std::vector<float> back = bakeVertexOcclusion(mesh, 2.0, Falloff::Binary, 4096, 2, 1, {}, true);
+  int checked = 0;
+  for (std::size_t i = 0; i < floorVertices; ++i) {
+    const glm::vec3 p = mesh.positions[i];
+    if (glm::length(glm::vec2(p)) > 1e-4f) continue;
+    EXPECT_NEAR(back[i], (r / d) * (r / d), 0.01);
+    EXPECT_LT(front[i], 0.005f);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 1);
+
+  FieldBakeSettings s;
+  s.kind = FieldKind::Grid4;
+  s.resolution = 8;
+  s.gridRays = 16;
+  s.selfOcclusionRays = 64;
+  s.threads = 2;
+  const BakedField open = bakeField(mesh, s, 2.0, Falloff::Binary);
+  EXPECT_TRUE(open.info.selfOcclusionBack);
+  ASSERT_EQ(open.vertexOcclusion.size(), 2 * mesh.positions.size());
+  const std::string path = (std::filesystem::temp_directory_path() / "aokit-two-sided.aof").string();
+  writeFieldFile(path, open);
+  const BakedField read = readFieldFile(path);
+  std::filesystem::remove(path);
+  EXPECT_TRUE(read.info.selfOcclusionBack);
+  EXPECT_EQ(read.vertexOcclusion, open.vertexOcclusion);
+  const BakedField closed = bakeField(ball, s, 2.0, Falloff::Binary);
+  EXPECT_FALSE(closed.info.selfOcclusionBack);
+  EXPECT_EQ(closed.vertexOcclusion.size(), ball.positions.size());
+  s.selfOcclusionBack = false;
+  EXPECT_EQ(bakeField(mesh, s, 2.0, Falloff::Binary).vertexOcclusion.size(), mesh.positions.size());
+}

@@ -3,6 +3,7 @@
 #include "fields/ContentHash.h"
 #include "fields/OcclusionProbe.h"
 #include "reference/EmbreeScene.h"
+#include "voxel/SolidVoxelizer.h"
 
 namespace aokit {
 
@@ -16,6 +17,11 @@ std::uint64_t BakeMesh::hash() const {
     hashed_ = true;
   }
   return hash_;
+}
+
+bool BakeMesh::closed() const {
+  if (closed_ < 0) closed_ = isWatertight(mesh_) ? 1 : 0;
+  return closed_ == 1;
 }
 
 const EmbreeScene& BakeMesh::scene() const {

@@ -23,11 +23,13 @@ class BakeMesh {
   const TriangleMesh& mesh() const { return mesh_; }
   std::uint64_t hash() const;          // meshContentHash, computed on first use
   const EmbreeScene& scene() const;    // the occluder alone, built on first use
+  bool closed() const;                 // watertight and consistently wound (isWatertight), on first use
 
  private:
   const TriangleMesh& mesh_;
   mutable std::uint64_t hash_ = 0;
   mutable bool hashed_ = false;
+  mutable int closed_ = -1;  // -1: not decided yet
   mutable std::unique_ptr<EmbreeScene> scene_;
 };
 

@@ -24,6 +24,7 @@ struct FieldBakeInfo {
   bool blur = false;                  // grid
   double fadeCells = 0.0, padding = 0.0;  // grid
   int selfOcclusionRays = 0;          // 0: no per-vertex self-occlusion baked
+  bool selfOcclusionBack = false;     // both sides baked (an open mesh): vertexOcclusion front, then back
   std::uint64_t seed = 0;
   std::uint64_t meshHash = 0;         // meshContentHash of the occluder
   std::uint32_t vertexCount = 0, triangleCount = 0;
@@ -34,7 +35,8 @@ struct BakedField {
   FieldBakeInfo info;
   RadialField radial;                 // kind cube
   GridField grid;                     // kinds grid6, grid4
-  std::vector<float> vertexOcclusion; // per vertex, empty unless info.selfOcclusionRays > 0
+  std::vector<float> vertexOcclusion; // per vertex (twice: front, back, with selfOcclusionBack),
+                                      // empty unless info.selfOcclusionRays > 0
 
   // Bytes of field data (what a GPU port uploads) plus the per-vertex floats.
   std::size_t memoryBytes() const {

@@ -24,6 +24,8 @@ const Schema<FieldBakeSettings>& fieldBakeSchema() {
     t.number("padding", &S::padding, Interval::closed(0, 4), "grid margin around the bounding box, fraction of R");
     t.flag("self", &S::selfOcclusion, "per-vertex self-occlusion of each occluder, baked with its field");
     t.integer("selfRays", &S::selfOcclusionRays, 1, 65536, "self-occlusion bake: rays per vertex");
+    t.flag("selfBack", &S::selfOcclusionBack,
+           "self-occlusion of an open mesh's back side too (seen through its cuts: clipped isosurfaces)");
     t.integer("threads", &S::threads, 1, 1024, "bake threads", "all cores");
     t.integer("bakeSeed", &S::seed, 0, 9007199254740991LL, "bake sampling seed");
     t.rule([](const S& s) { return s.farDistance == 0.0 || s.nearDistance < s.farDistance; },

@@ -33,9 +33,16 @@ BakedField bakeField(const BakeMesh& input, const FieldBakeSettings& settings, d
     out.radial = bakeRadialField(input, s, radius, falloff, part(0.0, fieldShare));
   else
     out.grid = bakeGridField(input, s, radius, falloff, part(0.0, fieldShare));
-  if (s.selfOcclusion)
+  if (s.selfOcclusion) {
+    const double sides = out.info.selfOcclusionBack ? 2.0 : 1.0, share = (1.0 - fieldShare) / sides;
     out.vertexOcclusion = bakeVertexOcclusion(input, radius, falloff, s.selfOcclusionRays, s.threads, s.seed,
-                                              part(fieldShare, 1.0 - fieldShare));
+                                              part(fieldShare, share));
+    if (out.info.selfOcclusionBack) {
+      const std::vector<float> back = bakeVertexOcclusion(input, radius, falloff, s.selfOcclusionRays, s.threads,
+                                                          s.seed, part(fieldShare + share, share), true);
+      out.vertexOcclusion.insert(out.vertexOcclusion.end(), back.begin(), back.end());
+    }
+  }
   out.info.bakeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -39,6 +39,7 @@ std::uint64_t bakeKey(const FieldBakeInfo& i) {
   h = mixIn(h, i.fadeCells);
   h = mixIn(h, i.padding);
   h = mixIn(h, i.selfOcclusionRays);
+  h = mixIn(h, static_cast<int>(i.selfOcclusionBack));
   h = mixIn(h, i.seed);
   h = mixIn(h, i.meshHash);
   h = mixIn(h, i.vertexCount);

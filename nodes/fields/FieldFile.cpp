@@ -53,10 +53,12 @@ struct Header {
   throw std::runtime_error(path + ": " + problem);
 }
 
+unsigned selfSides(const FieldBakeInfo& i) { return i.selfOcclusionBack ? 2u : 1u; }
+
 std::uint64_t expectedPayloadBytes(const FieldBakeInfo& i) {
   const std::uint64_t n = static_cast<std::uint64_t>(i.resolution);
   std::uint64_t floats = i.kind == FieldKind::Cube ? (n + 2) * (n + 2) * 6 * 7 : n * n * n * (i.kind == FieldKind::Grid4 ? 4 : 6);
-  if (i.selfOcclusionRays > 0) floats += i.vertexCount;
+  if (i.selfOcclusionRays > 0) floats += static_cast<std::uint64_t>(i.vertexCount) * selfSides(i);
   return floats * sizeof(float);
 }
 
@@ -72,7 +74,7 @@ Header encode(const BakedField& f, std::uint64_t payloadBytes, std::uint64_t pay
   h.u32(28, static_cast<std::uint32_t>(i.radialSamples));
   h.u32(32, static_cast<std::uint32_t>(i.raysPerSample));
   h.u32(36, static_cast<std::uint32_t>(i.gridRays));
-  h.u32(40, i.blur ? 1u : 0u);
+  h.u32(40, (i.blur ? 1u : 0u) | (i.selfOcclusionBack ? 2u : 0u));  // flags
   h.u32(44, static_cast<std::uint32_t>(i.selfOcclusionRays));
   h.u32(48, i.vertexCount);
   h.u32(52, i.triangleCount);
@@ -119,10 +121,14 @@ BakedField decode(const Header& h, const std::string& path, std::uint64_t& paylo
   i.radialSamples = static_cast<int>(h.u32(28));
   i.raysPerSample = static_cast<int>(h.u32(32));
   i.gridRays = static_cast<int>(h.u32(36));
-  i.blur = h.u32(40) != 0;
+  const std::uint32_t flags = h.u32(40);
+  if (flags > 3) fail(path, "unknown flags " + std::to_string(flags));
+  i.blur = (flags & 1u) != 0;
+  i.selfOcclusionBack = (flags & 2u) != 0;
   const std::uint32_t selfRays = h.u32(44);
   if (selfRays > 65536) fail(path, "self-occlusion ray count " + std::to_string(selfRays) + " is out of range");
   i.selfOcclusionRays = static_cast<int>(selfRays);
+  if (i.selfOcclusionBack && selfRays == 0) fail(path, "back-side self-occlusion without self-occlusion rays");
   i.vertexCount = h.u32(48);
   i.triangleCount = h.u32(52);
   if (i.vertexCount > kMaxVertices || i.triangleCount > 2 * kMaxVertices)
@@ -200,7 +206,7 @@ void writeFieldFile(const std::string& path, const BakedField& f) {
     payload = f.grid.texels;
   }
   if (f.info.selfOcclusionRays > 0) {
-    if (f.vertexOcclusion.size() != f.info.vertexCount)
+    if (f.vertexOcclusion.size() != static_cast<std::size_t>(f.info.vertexCount) * selfSides(f.info))
       throw std::invalid_argument(path + ": self-occlusion has " + std::to_string(f.vertexOcclusion.size()) +
                                   " values for " + std::to_string(f.info.vertexCount) + " vertices");
     payload.insert(payload.end(), f.vertexOcclusion.begin(), f.vertexOcclusion.end());
@@ -255,7 +261,8 @@ BakedField readFieldFile(const std::string& path) {
     f.grid.texels = take(0, count);
     used = count;
   }
-  if (f.info.selfOcclusionRays > 0) f.vertexOcclusion = take(used, f.info.vertexCount);
+  if (f.info.selfOcclusionRays > 0)
+    f.vertexOcclusion = take(used, static_cast<std::size_t>(f.info.vertexCount) * selfSides(f.info));
   return f;
 }
 

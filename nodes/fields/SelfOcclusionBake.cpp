@@ -10,7 +10,8 @@
 namespace aokit {
 
 std::vector<float> bakeVertexOcclusion(const BakeMesh& input, double radius, Falloff falloff, int rays,
-                                       int threads, std::uint64_t seed, const std::function<void(double)>& progress) {
+                                       int threads, std::uint64_t seed, const std::function<void(double)>& progress,
+                                       bool backSide) {
   const TriangleMesh& mesh = input.mesh();
   TriangleMesh withNormals;
   const TriangleMesh* m = &mesh;
@@ -27,7 +28,7 @@ std::vector<float> bakeVertexOcclusion(const BakeMesh& input, double radius, Fal
   samples.resize(width, static_cast<int>((count + width - 1) / width));
   for (std::size_t i = 0; i < count; ++i) {
     samples.position[i] = m->positions[i];
-    samples.normal[i] = m->normals[i];
+    samples.normal[i] = backSide ? -m->normals[i] : m->normals[i];
     samples.covered[i] = 1;
   }
   ReferenceOptions options;

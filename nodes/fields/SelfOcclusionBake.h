@@ -12,9 +12,10 @@
 namespace aokit {
 
 // One value in [0, 1] per vertex (mesh.positions order). Vertices without normals get them
-// computed (area-weighted). progress may throw to cancel.
+// computed (area-weighted). backSide: around the reversed normals (the side an open mesh shows
+// through its cuts). progress may throw to cancel.
 std::vector<float> bakeVertexOcclusion(const BakeMesh& mesh, double radius, Falloff falloff, int rays,
                                        int threads = 0, std::uint64_t seed = 1,
-                                       const std::function<void(double)>& progress = {});
+                                       const std::function<void(double)>& progress = {}, bool backSide = false);
 
 }  // namespace aokit

@@ -78,13 +78,21 @@ void setActorInput(vtkActor* actor, vtkPolyData* source) {
 void setBakedAO(vtkActor* actor, const std::vector<float>& perVertex) {
   vtkOpenGLPolyDataMapper* mapper = mapperOf(actor);
   vtkPolyData* source = sourceOf(actor);
-  if (static_cast<vtkIdType>(perVertex.size()) != source->GetNumberOfPoints())
+  const vtkIdType points = source->GetNumberOfPoints();
+  const auto count = static_cast<vtkIdType>(perVertex.size());
+  if (count != points && count != 2 * points)
     throw std::invalid_argument("baked AO: " + std::to_string(perVertex.size()) + " values for " +
-                                std::to_string(source->GetNumberOfPoints()) + " points");
+                                std::to_string(points) + " points (one or two a point)");
+  // Two components a point, front and back (one value a point: both sides alike).
+  const vtkIdType back = count == points ? 0 : points;
   vtkNew<vtkFloatArray> values;
   values->SetName(kBakedAOArray);
-  values->SetNumberOfValues(static_cast<vtkIdType>(perVertex.size()));
-  for (std::size_t i = 0; i < perVertex.size(); ++i) values->SetValue(static_cast<vtkIdType>(i), perVertex[i]);
+  values->SetNumberOfComponents(2);
+  values->SetNumberOfTuples(points);
+  for (vtkIdType i = 0; i < points; ++i) {
+    values->SetTypedComponent(i, 0, perVertex[static_cast<std::size_t>(i)]);
+    values->SetTypedComponent(i, 1, perVertex[static_cast<std::size_t>(back + i)]);
+  }
   keepSource(actor, source);
   bind(mapper, source, values);
 }

@@ -20,8 +20,10 @@ constexpr const char* kBakedAOArray = "AOKitBakedAO";
 // Sets the actor's source polydata (on its poly-data mapper); values set before are kept when they
 // still match the source's point count, and dropped otherwise (the geometry changed).
 void setActorInput(vtkActor* actor, vtkPolyData* source);
-// Hands the actor `perVertex` (one value in [0, 1] per point of its source); replaces earlier
-// values. Throws std::invalid_argument when the counts differ or the actor has no poly-data input.
+// Hands the actor `perVertex` (one value in [0, 1] per point of its source, or two: every point's
+// front side, then every point's back side, the side opposite its normal, which the G-buffer takes
+// where the eye sees it); replaces earlier values. Throws std::invalid_argument when the counts
+// differ or the actor has no poly-data input.
 void setBakedAO(vtkActor* actor, const std::vector<float>& perVertex);
 // Removes the values again (the G-buffer then reads 0 for this actor).
 void clearBakedAO(vtkActor* actor);

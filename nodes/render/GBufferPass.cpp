@@ -290,8 +290,8 @@ bool GBufferPass::PreReplaceShaderValues(std::string& vs, std::string&, std::str
       // attribute's current value is undefined (GL leaves it so after array draws): a per-prop
       // uniform scales it to 0 there.
       vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
-                                   "//VTK::Normal::Dec\nin float aokitBakedAOMC;\nuniform float aokitBakedScale;\n"
-                                   "out float aokitBakedAOVSOutput;",
+                                   "//VTK::Normal::Dec\nin vec2 aokitBakedAOMC;\nuniform float aokitBakedScale;\n"
+                                   "out vec2 aokitBakedAOVSOutput;",
                                    false);
       vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
                                    "//VTK::Normal::Impl\n  aokitBakedAOVSOutput = aokitBakedScale * aokitBakedAOMC;", false);
@@ -309,7 +309,7 @@ bool GBufferPass::PostReplaceShaderValues(std::string& vs, std::string& gs, std:
   vtkShaderProgram::Substitute(fs, "//AOKIT::GBuffer::Dec",
                                std::string("uniform float aokitFlags;\nuniform float aokitInstanceId;\nuniform int "
                                            "aokitParallel;\n") +
-                                   (bakedInput ? "in float aokitBakedAOVSOutput;\n" : ""),
+                                   (bakedInput ? "in vec2 aokitBakedAOVSOutput;\n" : ""),
                                false);
   std::string impl;
   if (fs.find("vertexVC") != std::string::npos && fs.find("normalVCVSOutput") != std::string::npos) {
@@ -323,7 +323,8 @@ bool GBufferPass::PostReplaceShaderValues(std::string& vs, std::string& gs, std:
     impl = std::string("#define AOKIT_GBUFFER_LEAN ") + (Options.lean ? "1" : "0") + "\n#define AOKIT_GBUFFER_IDS " +
            (Options.instanceIds ? "1" : "0") + "\n#define AOKIT_GBUFFER_FACET " + (Options.facetNormals ? "1" : "0") +
            "\n#define AOKIT_GBUFFER_BAKED " + (Options.bakedAO ? "1" : "0") +
-           "\n#define AOKIT_GBUFFER_BAKED_VALUE " + (bakedInput ? "aokitBakedAOVSOutput" : "0.0") + "\n" + code;
+           "\n#define AOKIT_GBUFFER_BAKED_VALUE " + (bakedInput ? "(aokitBackSide ? aokitBakedAOVSOutput.y : aokitBakedAOVSOutput.x)" : "0.0") +
+           "\n" + code;
   } else {
     // Without the varyings (no lighting, no normals) the surface cannot be described: leave it
     // out of the G-buffer rather than write garbage.
