@@ -1,5 +1,7 @@
 // Per-vertex baked AO through the G-buffer: values set on an actor reach the frame interpolated
 // across its triangles, other actors read 0, and clearing them restores 0.
+#include <set>
+
 #include <gtest/gtest.h>
 
 #include <vtkActor.h>
@@ -15,6 +17,7 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include "core/CreaseSplit.h"
 #include "core/Geometry.h"
 #include "core/NodeVisitor.h"
 #include "headless/FrameCapture.h"
@@ -159,6 +162,81 @@ TEST(BakedAO, TwoSidedValuesFollowTheSideSeen) {
   EXPECT_NEAR(front.second, 0.2, 1e-3);
   EXPECT_NEAR(back.first, 0.7, 1e-3);
   EXPECT_NEAR(back.second, 0.7, 1e-3);
+  view.window.renderer()->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(view.window.window());
+}
+
+// Values on a crease split (core/CreaseSplit.h): a cube whose eight corners are shared vertices,
+// one value per face. Drawn on the split, each face reads its own value to its edges; on the
+// shared corners it would blend the three faces' values. The actor's source stays the mesh's.
+TEST(BakedAO, ValuesOnACreaseSplitStayOnTheirFaces) {
+  Scene scene = makeBuiltinScene("sphere-plane");
+  const auto placed = collectInstances(*scene.root);
+  ASSERT_EQ(placed[1].geometry->name(), "sphere");
+  auto cube = std::make_shared<TriangleMesh>();
+  for (int i = 0; i < 8; ++i) cube->positions.emplace_back(i & 1 ? 0.6f : -0.6f, i & 2 ? 0.6f : -0.6f, i & 4 ? 0.6f : -0.6f);
+  const unsigned quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    cube->triangles.emplace_back(q[0], q[1], q[2]);
+    cube->triangles.emplace_back(q[0], q[2], q[3]);
+  }
+  cube->computeNormals();
+  placed[1].geometry->setMesh(cube);
+
+  SceneView view(scene, 240, 180);
+  const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
+  vtkActor* actor = actorOfInstance(view.window.renderer(), placed[1].id);
+  ASSERT_NE(actor, nullptr);
+  vtkPolyData* source = bakedAOSource(actor);
+  ASSERT_EQ(source->GetNumberOfPoints(), 8);
+
+  const CreaseSplit split = splitAtCreases(*cube);
+  ASSERT_EQ(split.pointCount(), 24u);
+  // Faces in quads order: z-, z+, y-, y+, x-, x+.
+  auto faceValue = [](int face) { return 0.1f + 0.15f * static_cast<float>(face); };
+  std::vector<float> values(split.pointCount(), -1.0f);
+  for (std::size_t f = 0; f < split.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) values[split.triangles[f][k]] = faceValue(static_cast<int>(f / 2));
+  setBakedAO(actor, values, split);
+  EXPECT_TRUE(hasBakedAO(actor));
+  EXPECT_EQ(bakedAOSource(actor), source);
+  auto* drawn = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+  ASSERT_NE(drawn, nullptr);
+  EXPECT_EQ(drawn->GetNumberOfPoints(), 24);
+  EXPECT_EQ(drawn->GetNumberOfCells(), source->GetNumberOfCells());
+  // A split of other triangles is refused and leaves the values as they were.
+  TriangleMesh turned = *cube;
+  for (auto& t : turned.triangles) t = glm::uvec3(t.y, t.z, t.x);
+  EXPECT_THROW(setBakedAO(actor, values, splitAtCreases(turned)), std::invalid_argument);
+  EXPECT_EQ(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)), drawn);
+
+  vtkNew<BakedOnlyPass> pass;
+  view.window.renderer()->SetPass(pass);
+  view.window.render();
+  std::vector<float> ao;
+  ASSERT_TRUE(pass->ReadAO(vtkOpenGLRenderWindow::SafeDownCast(view.window.window()), ao));
+  std::size_t pixels = 0;
+  double worst = 0.0;
+  std::set<int> facesSeen;
+  for (std::size_t i = 0; i < ao.size(); ++i) {
+    if (!surfaces.covered[i] || surfaces.position[i].z < 1e-3f) continue;
+    const glm::vec3 rel = surfaces.position[i] - glm::vec3(0.0f, 0.0f, 1.2f);
+    const glm::vec3 a = glm::abs(rel);
+    const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+    glm::vec3 others = a;
+    others[axis] = 0.0f;
+    if (a[axis] - std::max({others.x, others.y, others.z}) < 0.02f) continue;  // an edge's pixel
+    const int face = 2 * (2 - axis) + (rel[axis] > 0.0f ? 1 : 0);
+    facesSeen.insert(face);
+    ++pixels;
+    worst = std::max(worst, static_cast<double>(std::abs(ao[i] - faceValue(face))));
+  }
+  EXPECT_GT(pixels, 2000u);
+  EXPECT_GE(facesSeen.size(), 2u);
+  EXPECT_LT(worst, 2e-3) << "each face its own value, to its edges";
+
+  clearBakedAO(actor);
+  EXPECT_EQ(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)), source);
   view.window.renderer()->SetPass(nullptr);
   pass->ReleaseGraphicsResources(view.window.window());
 }

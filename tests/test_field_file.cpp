@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/CreaseSplit.h"
 #include "fields/ContentHash.h"
 #include "fields/FieldBaker.h"
 #include "fields/FieldCache.h"
@@ -76,8 +77,8 @@ class FieldFiles : public ::testing::Test {
 // A header with new values and a valid header checksum, so that the reader gets past it.
 std::string patchHeader(std::string bytes, std::size_t offset, const void* value, std::size_t size) {
   std::memcpy(&bytes[offset], value, size);
-  const std::uint64_t h = fnv1a(bytes.data(), 240);
-  std::memcpy(&bytes[240], &h, 8);
+  const std::uint64_t h = fnv1a(bytes.data(), 248);
+  std::memcpy(&bytes[248], &h, 8);
   return bytes;
 }
 
@@ -153,6 +154,9 @@ TEST_F(FieldFiles, BadFilesGiveOneLineErrors) {
   const double nan = std::nan("");
   writeBytes(path("radius.aof"), patchHeader(bytes, 72, &nan, 8));
   expectError(path("radius.aof"), "AO radius");
+  const std::uint32_t hugePoints = 0xffffffffu;
+  writeBytes(path("points.aof"), patchHeader(bytes, 240, &hugePoints, 4));
+  expectError(path("points.aof"), "self-occlusion point count 4294967295 does not fit");
 }
 
 TEST_F(FieldFiles, MismatchedFieldsAreRefused) {
@@ -273,6 +277,53 @@ TEST(SelfOcclusion, ConvexShapeAndWallOverFloor) {
     ++checked;
   }
   EXPECT_GE(checked, 15);
+}
+
+// A crease is baked on each side's own hemisphere (core/CreaseSplit.h): a roof whose two faces
+// meet at a ridge (shared vertices, faces tilted 45 degrees) under a ceiling a little above it,
+// baked as one mesh, binary falloff. With R far beyond the ceiling's height every direction that
+// rises hits it, and the cosine-weighted measure of the rising directions around a normal tilted
+// by b is (1 + cos b) / 2: 0.854 for each face's point at the ridge. The ridge's one vertex normal
+// points straight up and would read 1.
+TEST(SelfOcclusion, ARidgeIsBakedOnEachFacesHemisphere) {
+  const float w = 0.5f, h = 0.05f;
+  const int ny = 8;
+  TriangleMesh mesh;
+  for (int j = 0; j <= ny; ++j) {
+    const float y = -1.0f + 2.0f * j / ny;
+    mesh.positions.emplace_back(-w, y, -w);
+    mesh.positions.emplace_back(0.0f, y, 0.0f);
+    mesh.positions.emplace_back(w, y, -w);
+  }
+  for (unsigned j = 0; j < static_cast<unsigned>(ny); ++j)
+    for (unsigned side = 0; side < 2; ++side) {
+      const unsigned a = 3 * j + side, b = a + 1, c = a + 4, d = a + 3;  // eave/ridge, this row and next
+      mesh.triangles.emplace_back(a, c, d);
+      mesh.triangles.emplace_back(a, b, c);
+    }
+  const std::size_t roofVertices = mesh.positions.size();
+  TriangleMesh ceiling = *makeGridPlane(100.0, 100.0, 2, 2);
+  for (auto& p : ceiling.positions) p.z = h;
+  for (auto& t : ceiling.triangles) std::swap(t.y, t.z);  // facing down, at the roof
+  ceiling.normals.clear();
+  mesh.append(ceiling);
+  mesh.computeNormals();
+  for (std::size_t f = 0; f < 2 * ny; ++f)  // the roof faces face up and out
+    ASSERT_GT(glm::dot(mesh.normals[mesh.triangles[f].x], glm::vec3(0, 0, 1)), 0.5f);
+
+  const CreaseSplit split = splitAtCreases(mesh);
+  EXPECT_EQ(split.origin.size(), static_cast<std::size_t>(ny + 1)) << "a copy per ridge vertex";
+  const std::vector<float> ao = bakeVertexOcclusion(mesh, 10.0, Falloff::Binary, 4096, 2);
+  ASSERT_EQ(ao.size(), split.pointCount());
+  const double exact = 0.5 * (1.0 + std::cos(kPi / 4));
+  int ridgePoints = 0;
+  for (std::size_t p = 0; p < split.pointCount(); ++p) {
+    const std::size_t v = p < split.vertexCount ? p : split.origin[p - split.vertexCount];
+    if (v >= roofVertices) continue;
+    EXPECT_NEAR(ao[p], exact, 0.03) << "point " << p << " of vertex " << v;
+    if (v % 3 == 1) ++ridgePoints;
+  }
+  EXPECT_EQ(ridgePoints, 2 * (ny + 1)) << "each ridge vertex: a point for each face";
 }
 
 // An open mesh's back side: a floor sheet facing down (z = 0) under a sphere of radius r whose

@@ -28,6 +28,8 @@ struct FieldBakeInfo {
   std::uint64_t seed = 0;
   std::uint64_t meshHash = 0;         // meshContentHash of the occluder
   std::uint32_t vertexCount = 0, triangleCount = 0;
+  std::uint32_t selfPointCount = 0;   // self-occlusion values a side: the vertices, plus their copies
+                                      // at creases (core/CreaseSplit.h); 0 without self-occlusion
   double bakeSeconds = 0.0;           // informational, not part of the cache key
 };
 
@@ -35,7 +37,7 @@ struct BakedField {
   FieldBakeInfo info;
   RadialField radial;                 // kind cube
   GridField grid;                     // kinds grid6, grid4
-  std::vector<float> vertexOcclusion; // per vertex (twice: front, back, with selfOcclusionBack),
+  std::vector<float> vertexOcclusion; // per point of the crease split (twice: front, back, with selfOcclusionBack),
                                       // empty unless info.selfOcclusionRays > 0
 
   // Bytes of field data (what a GPU port uploads) plus the per-vertex floats.

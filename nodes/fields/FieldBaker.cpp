@@ -37,6 +37,7 @@ BakedField bakeField(const BakeMesh& input, const FieldBakeSettings& settings, d
     const double sides = out.info.selfOcclusionBack ? 2.0 : 1.0, share = (1.0 - fieldShare) / sides;
     out.vertexOcclusion = bakeVertexOcclusion(input, radius, falloff, s.selfOcclusionRays, s.threads, s.seed,
                                               part(fieldShare, share));
+    out.info.selfPointCount = static_cast<std::uint32_t>(out.vertexOcclusion.size());
     if (out.info.selfOcclusionBack) {
       const std::vector<float> back = bakeVertexOcclusion(input, radius, falloff, s.selfOcclusionRays, s.threads,
                                                           s.seed, part(fieldShare + share, share), true);

@@ -58,7 +58,7 @@ unsigned selfSides(const FieldBakeInfo& i) { return i.selfOcclusionBack ? 2u : 1
 std::uint64_t expectedPayloadBytes(const FieldBakeInfo& i) {
   const std::uint64_t n = static_cast<std::uint64_t>(i.resolution);
   std::uint64_t floats = i.kind == FieldKind::Cube ? (n + 2) * (n + 2) * 6 * 7 : n * n * n * (i.kind == FieldKind::Grid4 ? 4 : 6);
-  if (i.selfOcclusionRays > 0) floats += static_cast<std::uint64_t>(i.vertexCount) * selfSides(i);
+  if (i.selfOcclusionRays > 0) floats += static_cast<std::uint64_t>(i.selfPointCount) * selfSides(i);
   return floats * sizeof(float);
 }
 
@@ -97,7 +97,8 @@ Header encode(const BakedField& f, std::uint64_t payloadBytes, std::uint64_t pay
   h.f64(216, f.radial.rMax);
   h.u64(224, payloadBytes);
   h.u64(232, payloadChecksum);
-  h.u64(240, fnv1a(h.bytes, 240));
+  h.u32(240, i.selfPointCount);
+  h.u64(248, fnv1a(h.bytes, 248));
   return h;
 }
 
@@ -134,6 +135,13 @@ BakedField decode(const Header& h, const std::string& path, std::uint64_t& paylo
   if (i.vertexCount > kMaxVertices || i.triangleCount > 2 * kMaxVertices)
     fail(path, "vertex or triangle count is absurd (" + std::to_string(i.vertexCount) + ", " +
                    std::to_string(i.triangleCount) + ")");
+  i.selfPointCount = h.u32(240);
+  // Copies at creases: at most one a triangle corner.
+  if (selfRays > 0 ? i.selfPointCount < i.vertexCount ||
+                         i.selfPointCount - i.vertexCount > 3ull * i.triangleCount
+                   : i.selfPointCount != 0)
+    fail(path, "self-occlusion point count " + std::to_string(i.selfPointCount) + " does not fit " +
+                   std::to_string(i.vertexCount) + " vertices and " + std::to_string(i.triangleCount) + " triangles");
   i.meshHash = h.u64(56);
   i.seed = h.u64(64);
   i.radius = h.f64(72);
@@ -191,7 +199,7 @@ Header readHeader(std::ifstream& in, const std::string& path, std::uint64_t& fil
                    std::to_string(kFieldFileVersion) + ")");
   if (got < kFieldHeaderBytes)
     fail(path, "truncated header (" + std::to_string(got) + " of " + std::to_string(kFieldHeaderBytes) + " bytes)");
-  if (h.u64(240) != fnv1a(h.bytes, 240)) fail(path, "corrupted header (checksum mismatch)");
+  if (h.u64(248) != fnv1a(h.bytes, 248)) fail(path, "corrupted header (checksum mismatch)");
   return h;
 }
 
@@ -206,9 +214,9 @@ void writeFieldFile(const std::string& path, const BakedField& f) {
     payload = f.grid.texels;
   }
   if (f.info.selfOcclusionRays > 0) {
-    if (f.vertexOcclusion.size() != static_cast<std::size_t>(f.info.vertexCount) * selfSides(f.info))
+    if (f.vertexOcclusion.size() != static_cast<std::size_t>(f.info.selfPointCount) * selfSides(f.info))
       throw std::invalid_argument(path + ": self-occlusion has " + std::to_string(f.vertexOcclusion.size()) +
-                                  " values for " + std::to_string(f.info.vertexCount) + " vertices");
+                                  " values for " + std::to_string(f.info.selfPointCount) + " points");
     payload.insert(payload.end(), f.vertexOcclusion.begin(), f.vertexOcclusion.end());
   }
   const std::uint64_t bytes = payload.size() * sizeof(float);
@@ -262,7 +270,7 @@ BakedField readFieldFile(const std::string& path) {
     used = count;
   }
   if (f.info.selfOcclusionRays > 0)
-    f.vertexOcclusion = take(used, static_cast<std::size_t>(f.info.vertexCount) * selfSides(f.info));
+    f.vertexOcclusion = take(used, static_cast<std::size_t>(f.info.selfPointCount) * selfSides(f.info));
   return f;
 }
 

@@ -8,6 +8,7 @@
 #include <vtkRenderer.h>
 
 #include "core/AOScene.h"
+#include "core/CreaseSplit.h"
 #include "core/Geometry.h"
 #include "core/Scene.h"
 #include "render/ActorKeys.h"
@@ -90,18 +91,27 @@ vtkSmartPointer<vtkRenderPass> FieldTechnique::makePass() {
 void FieldTechnique::onAttach(vtkRenderer* renderer, AOScene&) { applySelfOcclusion(renderer); }
 
 void FieldTechnique::applySelfOcclusion(vtkRenderer* renderer) {
-  // Instance id -> its field's per-vertex self-occlusion.
-  std::map<std::uint32_t, const std::vector<float>*> byId;
+  // Instance id -> its occluder, for those whose field carries per-point self-occlusion.
+  std::map<std::uint32_t, const FieldOccluder*> byId;
   for (const FieldOccluder& o : occluders_)
-    if (!fields_[o.field]->vertexOcclusion.empty()) byId[o.instanceId] = &fields_[o.field]->vertexOcclusion;
+    if (!fields_[o.field]->vertexOcclusion.empty()) byId[o.instanceId] = &o;
   if (FieldPass* p = pass()) p->SetBakedAO(!byId.empty());
   if (byId.empty()) return;
+  std::map<std::size_t, CreaseSplit> splits;  // per field baked with crease copies, as the bake split its mesh
   vtkActorCollection* actors = renderer->GetActors();
   actors->InitTraversal();
   while (vtkActor* a = actors->GetNextActor()) {
     const auto it = byId.find(propInstanceId(a));
     if (it == byId.end() || hasBakedAO(a)) continue;
-    setBakedAO(a, *it->second);
+    const BakedField& field = *fields_[it->second->field];
+    if (field.info.selfPointCount == field.info.vertexCount) {
+      setBakedAO(a, field.vertexOcclusion);
+    } else {
+      auto split = splits.find(it->second->field);
+      if (split == splits.end())
+        split = splits.emplace(it->second->field, splitAtCreases(*plannedMesh_[byInstance_.at(it->first)])).first;
+      setBakedAO(a, field.vertexOcclusion, split->second);
+    }
     selfShaded_.push_back(a);
   }
 }

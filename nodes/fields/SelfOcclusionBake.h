@@ -11,8 +11,10 @@
 
 namespace aokit {
 
-// One value in [0, 1] per vertex (mesh.positions order). Vertices without normals get them
-// computed (area-weighted). backSide: around the reversed normals (the side an open mesh shows
+// One value in [0, 1] per point of splitAtCreases(mesh) (core/CreaseSplit.h): the vertices in
+// mesh.positions order around their normals, then the copies at creases around their facets' normal
+// (a mesh without creases: one a vertex). Vertices without normals get them computed (area-
+// weighted). backSide: around the reversed normals (the side an open mesh shows
 // through its cuts). progress may throw to cancel.
 std::vector<float> bakeVertexOcclusion(const BakeMesh& mesh, double radius, Falloff falloff, int rays,
                                        int threads = 0, std::uint64_t seed = 1,

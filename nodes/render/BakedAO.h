@@ -14,6 +14,8 @@ class vtkPolyData;
 
 namespace aokit {
 
+struct CreaseSplit;
+
 // The point array that carries the values, and the vertex attribute the G-buffer reads.
 constexpr const char* kBakedAOArray = "AOKitBakedAO";
 
@@ -25,8 +27,18 @@ void setActorInput(vtkActor* actor, vtkPolyData* source);
 // where the eye sees it); replaces earlier values. Throws std::invalid_argument when the counts
 // differ or the actor has no poly-data input.
 void setBakedAO(vtkActor* actor, const std::vector<float>& perVertex);
+// The same for values per point of a crease split of the source's surface (splitAtCreases of its
+// triangleMeshOf, core/CreaseSplit.h): the drawn copy then has the split's copies after the
+// source's points (their point data copied from the vertex each copies), and its polygons and
+// strips use them where the split does; vertices, lines, cell order and cell data stay the
+// source's. Pickers on such an actor report the copy's point ids (the source's, or a copy's above
+// its point count). A split without copies is setBakedAO above.
+void setBakedAO(vtkActor* actor, const std::vector<float>& perPoint, const CreaseSplit& split);
 // Removes the values again (the G-buffer then reads 0 for this actor).
 void clearBakedAO(vtkActor* actor);
 bool hasBakedAO(vtkActor* actor);
+// The polydata the actor shows, without the kit's values: what the kit measures and voxelizes
+// (the drawn copy may hold crease copies of its points).
+vtkPolyData* bakedAOSource(vtkActor* actor);
 
 }  // namespace aokit

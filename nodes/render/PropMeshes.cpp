@@ -28,6 +28,7 @@
 #include "parallel/RankExchange.h"
 #include "parallel/RankMeshes.h"
 #include "render/ActorKeys.h"
+#include "render/BakedAO.h"
 
 namespace aokit {
 
@@ -197,7 +198,8 @@ void PropMeshes::meshesOf(vtkProp* prop, const glm::dmat4& world, bool part, std
     }
     return;
   }
-  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  // An actor given baked AO draws a copy that may split points at creases: measure its source.
+  vtkDataObject* input = hasBakedAO(actor) ? bakedAOSource(actor) : mapper->GetInputDataObject(0, 0);
   if (auto* poly = vtkPolyData::SafeDownCast(input)) {
     if (poly->GetNumberOfPoints() > 0) out.push_back({prop, poly, world, !part});
     return;

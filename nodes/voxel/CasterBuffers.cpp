@@ -12,6 +12,7 @@
 #include <vtk_glew.h>
 
 #include "core/TriangleMesh.h"
+#include "render/BakedAO.h"
 #include "voxel/SolidVoxelizer.h"
 
 namespace aokit {
@@ -24,6 +25,7 @@ vtkPolyData* CasterBuffers::propPolyData(vtkProp* prop) {
   if (!mapper || (!mapper->GetInputConnection(0, 0) && !mapper->GetInputDataObject(0, 0))) return nullptr;
   // Props the renderer culled were not drawn this frame: their pipeline may be stale.
   mapper->Update();
+  if (hasBakedAO(actor)) return bakedAOSource(actor);  // its drawn copy may split points at creases
   return vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
 }
 
