@@ -17,6 +17,7 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include "core/BakeRefinement.h"
 #include "core/CreaseSplit.h"
 #include "core/Geometry.h"
 #include "core/NodeVisitor.h"
@@ -56,6 +57,20 @@ class BakedOnlyPass : public DeferredAOPass {
 };
 vtkStandardNewMacro(BakedOnlyPass);
 
+// A cube 1.2 across whose eight corners are shared vertices, its faces in the order z-, z+, y-, y+,
+// x-, x+ (two triangles each).
+std::shared_ptr<TriangleMesh> sharedCornerCube() {
+  auto cube = std::make_shared<TriangleMesh>();
+  for (int i = 0; i < 8; ++i) cube->positions.emplace_back(i & 1 ? 0.6f : -0.6f, i & 2 ? 0.6f : -0.6f, i & 4 ? 0.6f : -0.6f);
+  const unsigned quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    cube->triangles.emplace_back(q[0], q[1], q[2]);
+    cube->triangles.emplace_back(q[0], q[2], q[3]);
+  }
+  cube->computeNormals();
+  return cube;
+}
+
 vtkActor* actorOfInstance(vtkRenderer* renderer, std::uint32_t id) {
   vtkActorCollection* actors = renderer->GetActors();
   actors->InitTraversal();
@@ -63,6 +78,24 @@ vtkActor* actorOfInstance(vtkRenderer* renderer, std::uint32_t id) {
     if (propInstanceId(a) == id) return a;
   return nullptr;
 }
+
+// The sphere-plane scene with its sphere replaced by sharedCornerCube(), in a 240 x 180 view.
+struct CubeOverFloor {
+  Scene scene = makeBuiltinScene("sphere-plane");
+  std::shared_ptr<TriangleMesh> cube = sharedCornerCube();
+  std::string replaced;  // the name of what the cube replaced
+  std::unique_ptr<SceneView> view;
+  SurfaceSamples surfaces;
+  vtkActor* actor = nullptr;
+  CubeOverFloor() {
+    const auto placed = collectInstances(*scene.root);
+    replaced = placed[1].geometry->name();
+    placed[1].geometry->setMesh(cube);
+    view = std::make_unique<SceneView>(scene, 240, 180);
+    surfaces = captureSurfaces(view->window, view->renderer);
+    actor = actorOfInstance(view->window.renderer(), placed[1].id);
+  }
+};
 
 }  // namespace
 
@@ -170,57 +203,43 @@ TEST(BakedAO, TwoSidedValuesFollowTheSideSeen) {
 // one value per face. Drawn on the split, each face reads its own value to its edges; on the
 // shared corners it would blend the three faces' values. The actor's source stays the mesh's.
 TEST(BakedAO, ValuesOnACreaseSplitStayOnTheirFaces) {
-  Scene scene = makeBuiltinScene("sphere-plane");
-  const auto placed = collectInstances(*scene.root);
-  ASSERT_EQ(placed[1].geometry->name(), "sphere");
-  auto cube = std::make_shared<TriangleMesh>();
-  for (int i = 0; i < 8; ++i) cube->positions.emplace_back(i & 1 ? 0.6f : -0.6f, i & 2 ? 0.6f : -0.6f, i & 4 ? 0.6f : -0.6f);
-  const unsigned quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& q : quads) {
-    cube->triangles.emplace_back(q[0], q[1], q[2]);
-    cube->triangles.emplace_back(q[0], q[2], q[3]);
-  }
-  cube->computeNormals();
-  placed[1].geometry->setMesh(cube);
-
-  SceneView view(scene, 240, 180);
-  const SurfaceSamples surfaces = captureSurfaces(view.window, view.renderer);
-  vtkActor* actor = actorOfInstance(view.window.renderer(), placed[1].id);
-  ASSERT_NE(actor, nullptr);
-  vtkPolyData* source = bakedAOSource(actor);
+  CubeOverFloor c;
+  ASSERT_EQ(c.replaced, "sphere");
+  ASSERT_NE(c.actor, nullptr);
+  vtkPolyData* source = bakedAOSource(c.actor);
   ASSERT_EQ(source->GetNumberOfPoints(), 8);
 
-  const CreaseSplit split = splitAtCreases(*cube);
+  const CreaseSplit split = splitAtCreases(*c.cube);
   ASSERT_EQ(split.pointCount(), 24u);
   // Faces in quads order: z-, z+, y-, y+, x-, x+.
   auto faceValue = [](int face) { return 0.1f + 0.15f * static_cast<float>(face); };
   std::vector<float> values(split.pointCount(), -1.0f);
   for (std::size_t f = 0; f < split.triangles.size(); ++f)
     for (int k = 0; k < 3; ++k) values[split.triangles[f][k]] = faceValue(static_cast<int>(f / 2));
-  setBakedAO(actor, values, split);
-  EXPECT_TRUE(hasBakedAO(actor));
-  EXPECT_EQ(bakedAOSource(actor), source);
-  auto* drawn = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+  setBakedAO(c.actor, values, split);
+  EXPECT_TRUE(hasBakedAO(c.actor));
+  EXPECT_EQ(bakedAOSource(c.actor), source);
+  auto* drawn = vtkPolyData::SafeDownCast(c.actor->GetMapper()->GetInputDataObject(0, 0));
   ASSERT_NE(drawn, nullptr);
   EXPECT_EQ(drawn->GetNumberOfPoints(), 24);
   EXPECT_EQ(drawn->GetNumberOfCells(), source->GetNumberOfCells());
   // A split of other triangles is refused and leaves the values as they were.
-  TriangleMesh turned = *cube;
+  TriangleMesh turned = *c.cube;
   for (auto& t : turned.triangles) t = glm::uvec3(t.y, t.z, t.x);
-  EXPECT_THROW(setBakedAO(actor, values, splitAtCreases(turned)), std::invalid_argument);
-  EXPECT_EQ(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)), drawn);
+  EXPECT_THROW(setBakedAO(c.actor, values, splitAtCreases(turned)), std::invalid_argument);
+  EXPECT_EQ(vtkPolyData::SafeDownCast(c.actor->GetMapper()->GetInputDataObject(0, 0)), drawn);
 
   vtkNew<BakedOnlyPass> pass;
-  view.window.renderer()->SetPass(pass);
-  view.window.render();
+  c.view->window.renderer()->SetPass(pass);
+  c.view->window.render();
   std::vector<float> ao;
-  ASSERT_TRUE(pass->ReadAO(vtkOpenGLRenderWindow::SafeDownCast(view.window.window()), ao));
+  ASSERT_TRUE(pass->ReadAO(vtkOpenGLRenderWindow::SafeDownCast(c.view->window.window()), ao));
   std::size_t pixels = 0;
   double worst = 0.0;
   std::set<int> facesSeen;
   for (std::size_t i = 0; i < ao.size(); ++i) {
-    if (!surfaces.covered[i] || surfaces.position[i].z < 1e-3f) continue;
-    const glm::vec3 rel = surfaces.position[i] - glm::vec3(0.0f, 0.0f, 1.2f);
+    if (!c.surfaces.covered[i] || c.surfaces.position[i].z < 1e-3f) continue;
+    const glm::vec3 rel = c.surfaces.position[i] - glm::vec3(0.0f, 0.0f, 1.2f);
     const glm::vec3 a = glm::abs(rel);
     const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
     glm::vec3 others = a;
@@ -235,8 +254,55 @@ TEST(BakedAO, ValuesOnACreaseSplitStayOnTheirFaces) {
   EXPECT_GE(facesSeen.size(), 2u);
   EXPECT_LT(worst, 2e-3) << "each face its own value, to its edges";
 
-  clearBakedAO(actor);
-  EXPECT_EQ(vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)), source);
-  view.window.renderer()->SetPass(nullptr);
-  pass->ReleaseGraphicsResources(view.window.window());
+  clearBakedAO(c.actor);
+  EXPECT_EQ(vtkPolyData::SafeDownCast(c.actor->GetMapper()->GetInputDataObject(0, 0)), source);
+  c.view->window.renderer()->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(c.view->window.window());
+}
+
+// Values on a refined split (core/BakeRefinement.h): the same cube, its values a curve across x,
+// v = 0.8 u^2 with u = (x + 0.6) / 1.2, which its corners (0 or 0.8) can only draw as a ramp (off by
+// 0.2 at the middle). Refined twice where the values step, with each new point given the curve's
+// value, the drawn copy follows the curve within what straight pieces a quarter apart can (0.8 / 64),
+// and covers every pixel the mesh covers: no cracks where triangles were halved.
+TEST(BakedAO, ValuesOnARefinedSplitFollowTheirPoints) {
+  CubeOverFloor c;
+  ASSERT_EQ(c.replaced, "sphere");
+  ASSERT_NE(c.actor, nullptr);
+  auto curve = [](float x) { const float u = (x + 0.6f) / 1.2f; return 0.8f * u * u; };
+  CreaseSplit split = splitAtCreases(*c.cube);
+  std::vector<float> values;
+  auto valueOf = [&](int, std::uint32_t p) { return values[p]; };
+  for (int round = 0; round < 2; ++round) {
+    values.resize(split.pointCount());
+    for (std::size_t p = 0; p < split.pointCount(); ++p) values[p] = curve(split.position(*c.cube, p).x);
+    ASSERT_GT(refineWhereValuesStep(split, *c.cube, valueOf, 1, 0.03f, 0.0), 0u);
+  }
+  values.resize(split.pointCount());
+  for (std::size_t p = 0; p < split.pointCount(); ++p) values[p] = curve(split.position(*c.cube, p).x);
+  setBakedAO(c.actor, values, split);
+  auto* drawn = vtkPolyData::SafeDownCast(c.actor->GetMapper()->GetInputDataObject(0, 0));
+  ASSERT_NE(drawn, nullptr);
+  EXPECT_EQ(drawn->GetNumberOfPoints(), static_cast<vtkIdType>(split.pointCount()));
+  EXPECT_EQ(drawn->GetNumberOfPolys(), static_cast<vtkIdType>(split.triangles.size()));
+
+  vtkNew<BakedOnlyPass> pass;
+  c.view->window.renderer()->SetPass(pass);
+  c.view->window.render();
+  std::vector<float> ao;
+  std::vector<std::uint8_t> covered;
+  ASSERT_TRUE(pass->ReadAO(vtkOpenGLRenderWindow::SafeDownCast(c.view->window.window()), ao, &covered));
+  std::size_t pixels = 0, cracks = 0;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < ao.size(); ++i) {
+    if (c.surfaces.covered[i] && !covered[i]) ++cracks;
+    if (!c.surfaces.covered[i] || c.surfaces.position[i].z < 1e-3f) continue;  // the cube, not the floor
+    ++pixels;
+    worst = std::max(worst, static_cast<double>(std::abs(ao[i] - curve(c.surfaces.position[i].x))));
+  }
+  EXPECT_GT(pixels, 2000u);
+  EXPECT_EQ(cracks, 0u);
+  EXPECT_LT(worst, 0.8 / 64 + 2e-3) << "the curve between points a quarter apart";
+  c.view->window.renderer()->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(c.view->window.window());
 }

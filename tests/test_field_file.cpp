@@ -18,6 +18,8 @@
 #include "fields/FieldResolution.h"
 #include "fields/SelfOcclusionBake.h"
 #include "fields/SphericalCaps.h"
+#include "reference/AOReference.h"
+#include "reference/EmbreeScene.h"
 #include "reference/Falloff.h"
 #include "scenes/Shapes.h"
 
@@ -360,7 +362,9 @@ TEST(SelfOcclusion, BackSideOfAnOpenSheetUnderASphere) {
   s.threads = 2;
   const BakedField open = bakeField(mesh, s, 2.0, Falloff::Binary);
   EXPECT_TRUE(open.info.selfOcclusionBack);
-  ASSERT_EQ(open.vertexOcclusion.size(), 2 * mesh.positions.size());
+  // Both sides of every point: the vertices, then what the refinement added (under the sphere).
+  EXPECT_GE(open.info.selfPointCount, mesh.positions.size());
+  ASSERT_EQ(open.vertexOcclusion.size(), 2 * static_cast<std::size_t>(open.info.selfPointCount));
   const std::string path = (std::filesystem::temp_directory_path() / "aokit-two-sided.aof").string();
   writeFieldFile(path, open);
   const BakedField read = readFieldFile(path);
@@ -369,7 +373,108 @@ TEST(SelfOcclusion, BackSideOfAnOpenSheetUnderASphere) {
   EXPECT_EQ(read.vertexOcclusion, open.vertexOcclusion);
   const BakedField closed = bakeField(ball, s, 2.0, Falloff::Binary);
   EXPECT_FALSE(closed.info.selfOcclusionBack);
-  EXPECT_EQ(closed.vertexOcclusion.size(), ball.positions.size());
+  EXPECT_GE(closed.info.selfPointCount, ball.positions.size());
+  EXPECT_EQ(closed.vertexOcclusion.size(), closed.info.selfPointCount);
   s.selfOcclusionBack = false;
-  EXPECT_EQ(bakeField(mesh, s, 2.0, Falloff::Binary).vertexOcclusion.size(), mesh.positions.size());
+  const BakedField oneSide = bakeField(mesh, s, 2.0, Falloff::Binary);
+  EXPECT_EQ(oneSide.vertexOcclusion.size(), oneSide.info.selfPointCount);
+}
+
+// Refined where the values step (SelfOcclusionBake.h, core/BakeRefinement.h): a floor of 4 x 4 cells and a
+// wall standing a little behind its edge, baked as one mesh. Across the floor the
+// occlusion falls from the wall to nothing within R, far steeper than the floor's four vertices
+// can draw. Judged against
+// the reference itself at points inside the floor's triangles: the refined points, interpolated
+// across their triangles, follow it much closer than the vertices alone; and a loader rebuilds the
+// same points from the values.
+TEST(SelfOcclusion, RefinedWhereTheValuesStepFollowTheReference) {
+  TriangleMesh mesh = *makeGridPlane(2.0, 2.0, 4, 4);  // facing +z, half an R a cell
+  for (auto& p : mesh.positions) p += glm::vec3(1.0f, 1.0f, 0.0f);  // over [0, 2]^2
+  TriangleMesh wall;
+  wall.positions = {{-0.2f, 0, 0}, {-0.2f, 2, 0}, {-0.2f, 2, 2}, {-0.2f, 0, 2}};
+  wall.triangles = {{0, 1, 2}, {0, 2, 3}};  // facing +x
+  mesh.normals.clear();
+  mesh.append(wall);
+  mesh.computeNormals();
+  const double radius = 1.0;
+  const BakeMesh bake(mesh);
+  const SelfOcclusion refined = bakeSelfOcclusion(bake, radius, Falloff::Binary, 1024, 1, 2, 2);
+  ASSERT_EQ(refined.values.size(), refined.points.pointCount());
+  ASSERT_GT(refined.points.midpoints.size(), 4u);
+  const CreaseSplit vertices = splitAtCreases(mesh);
+  const std::vector<float> plain = bakeVertexOcclusion(bake, radius, Falloff::Binary, 1024, 2);
+
+  // The value drawn at p on the floor: interpolated across the (refined) floor triangle holding it.
+  auto drawn = [&](const CreaseSplit& s, const std::vector<float>& values, const glm::vec2& p) {
+    for (const glm::uvec3& t : s.triangles) {
+      const glm::vec3 a = s.position(mesh, t.x), b = s.position(mesh, t.y), c = s.position(mesh, t.z);
+      if (a.z != 0.0f || b.z != 0.0f || c.z != 0.0f) continue;
+      const float area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+      const float wb = ((p.x - a.x) * (c.y - a.y) - (c.x - a.x) * (p.y - a.y)) / area;
+      const float wc = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / area;
+      if (wb < -1e-6f || wc < -1e-6f || wb + wc > 1.0f + 1e-6f) continue;
+      return (1.0f - wb - wc) * values[t.x] + wb * values[t.y] + wc * values[t.z];
+    }
+    ADD_FAILURE() << "no floor triangle at " << p.x << ", " << p.y;
+    return 0.0f;
+  };
+  CreaseSplit unrefined = vertices;
+  if (unrefined.triangles.empty()) unrefined.triangles = mesh.triangles;
+  const int n = 16;
+  SurfaceSamples samples;
+  samples.resize(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      samples.position[samples.index(i, j)] = glm::vec3(0.05f + 1.9f * i / (n - 1), 0.05f + 1.9f * j / (n - 1), 0.0f);
+      samples.normal[samples.index(i, j)] = glm::vec3(0, 0, 1);
+      samples.covered[samples.index(i, j)] = 1;
+    }
+  ReferenceOptions options;
+  options.samples = 4096;
+  options.radius = radius;
+  options.threads = 2;
+  options.hemisphere = Hemisphere::Shading;  // the floor's normal, exact
+  const AOBuffer truth = computeReferenceAO(bake.scene(), samples, options);
+  double refinedError = 0.0, plainError = 0.0;
+  for (std::size_t k = 0; k < samples.pixelCount(); ++k) {
+    const glm::vec2 p(samples.position[k]);
+    refinedError += std::pow(drawn(refined.points, refined.values, p) - truth.ao[k], 2.0);
+    plainError += std::pow(drawn(unrefined, plain, p) - truth.ao[k], 2.0);
+  }
+  refinedError = std::sqrt(refinedError / samples.pixelCount());
+  plainError = std::sqrt(plainError / samples.pixelCount());
+  std::printf("floor RMSE against the reference: refined %.4f (%zu points), vertices %.4f\n", refinedError,
+              refined.points.pointCount(), plainError);
+  EXPECT_LT(refinedError, 0.5 * plainError) << "refined " << refinedError << ", vertices " << plainError;
+  EXPECT_LT(refinedError, 0.006);
+
+  const CreaseSplit rebuilt = selfOcclusionPoints(mesh, refined.values, 1, radius, 2);
+  EXPECT_EQ(rebuilt.pointCount(), refined.points.pointCount());
+  EXPECT_EQ(rebuilt.triangles, refined.points.triangles);
+  std::vector<float> shorter = refined.values;
+  shorter.pop_back();
+  EXPECT_THROW(selfOcclusionPoints(mesh, shorter, 1, radius, 2), std::invalid_argument);
+  EXPECT_THROW(selfOcclusionPoints(mesh, refined.values, 1, radius, 1), std::invalid_argument) << "another round count";
+
+  // A cache file whose values rebuild other points (another refinement's) is baked again.
+  const fs::path dir = fs::temp_directory_path() / ("aokit-refined-" + std::to_string(getpid()));
+  FieldCache cache(dir.string());
+  FieldBakeSettings s;
+  s.kind = FieldKind::Grid4;
+  s.resolution = 8;
+  s.gridRays = 16;
+  s.selfOcclusionRays = 256;
+  s.selfOcclusionBack = false;
+  s.selfRefinements = 2;
+  s.threads = 2;
+  const CachedField first = cache.getOrBake(bake, s, radius, Falloff::Binary);
+  ASSERT_GT(first.field.info.selfPointCount, first.field.info.vertexCount);
+  BakedField other = first.field;
+  std::fill(other.vertexOcclusion.begin(), other.vertexOcclusion.end(), 0.0f);  // nothing steps: no midpoints
+  writeFieldFile(first.path, other);
+  const CachedField again = cache.getOrBake(bake, s, radius, Falloff::Binary);
+  EXPECT_FALSE(again.hit);
+  EXPECT_NE(again.warning.find("do not fit"), std::string::npos) << again.warning;
+  EXPECT_TRUE(cache.getOrBake(bake, s, radius, Falloff::Binary).hit);
+  fs::remove_all(dir);
 }

@@ -2,6 +2,15 @@
 
 namespace aokit {
 
+glm::vec3 CreaseSplit::position(const TriangleMesh& mesh, std::size_t p) const {
+  if (p < vertexCount) return mesh.positions[p];
+  const std::size_t copy = p - vertexCount;
+  if (copy < origin.size()) return mesh.positions[origin[copy]];
+  const SplitMidpoint& m = midpoints[copy - origin.size()];
+  return m.weights.x * mesh.positions[m.vertices.x] + m.weights.y * mesh.positions[m.vertices.y] +
+         m.weights.z * mesh.positions[m.vertices.z];
+}
+
 CreaseSplit splitAtCreases(const TriangleMesh& input, double featureAngleDegrees) {
   TriangleMesh withNormals;
   const TriangleMesh* mesh = &input;

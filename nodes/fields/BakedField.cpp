@@ -24,6 +24,7 @@ FieldBakeInfo makeBakeInfo(const FieldBakeSettings& s, int resolution, double ra
     i.padding = s.padding;
   }
   i.selfOcclusionRays = s.selfOcclusion ? s.selfOcclusionRays : 0;
+  i.selfRefinements = s.selfOcclusion ? s.selfRefinements : 0;
   // A closed, consistently wound mesh never shows its back side.
   i.selfOcclusionBack = s.selfOcclusion && s.selfOcclusionBack && !input.closed();
   i.seed = s.seed;

@@ -1,5 +1,7 @@
 #include "fields/FieldBakeSettings.h"
 
+#include "fields/SelfOcclusionBake.h"
+
 #include <stdexcept>
 
 namespace aokit {
@@ -24,6 +26,9 @@ const Schema<FieldBakeSettings>& fieldBakeSchema() {
     t.number("padding", &S::padding, Interval::closed(0, 4), "grid margin around the bounding box, fraction of R");
     t.flag("self", &S::selfOcclusion, "per-vertex self-occlusion of each occluder, baked with its field");
     t.integer("selfRays", &S::selfOcclusionRays, 1, 65536, "self-occlusion bake: rays per vertex");
+    t.integer("selfRefine", &S::selfRefinements, 0, kMaxSelfRefinements,
+              "self-occlusion bake: rounds of halving the edges whose baked values differ by more than 0.03 "
+              "(contacts finer than the vertices; each round adds points and drawn triangles)");
     t.flag("selfBack", &S::selfOcclusionBack,
            "self-occlusion of an open mesh's back side too (seen through its cuts: clipped isosurfaces)");
     t.integer("threads", &S::threads, 1, 1024, "bake threads", "all cores");

@@ -39,6 +39,7 @@ struct FieldBakeSettings {
   // Both.
   bool selfOcclusion = true;     //!< bake per-vertex AO of the occluder itself
   int selfOcclusionRays = 256;   //!< rays per vertex
+  int selfRefinements = 1;       //!< rounds of halving edges where the baked values step (SelfOcclusionBake.h)
   bool selfOcclusionBack = true; //!< open meshes: the back side's too (the G-buffer picks the side seen)
   int threads = 0;               //!< bake threads; 0 = all cores
   std::uint64_t seed = 1;        //!< sampling seed

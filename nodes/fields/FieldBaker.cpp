@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "fields/FieldResolution.h"
 #include "fields/GridFieldBake.h"
@@ -34,15 +35,12 @@ BakedField bakeField(const BakeMesh& input, const FieldBakeSettings& settings, d
   else
     out.grid = bakeGridField(input, s, radius, falloff, part(0.0, fieldShare));
   if (s.selfOcclusion) {
-    const double sides = out.info.selfOcclusionBack ? 2.0 : 1.0, share = (1.0 - fieldShare) / sides;
-    out.vertexOcclusion = bakeVertexOcclusion(input, radius, falloff, s.selfOcclusionRays, s.threads, s.seed,
-                                              part(fieldShare, share));
-    out.info.selfPointCount = static_cast<std::uint32_t>(out.vertexOcclusion.size());
-    if (out.info.selfOcclusionBack) {
-      const std::vector<float> back = bakeVertexOcclusion(input, radius, falloff, s.selfOcclusionRays, s.threads,
-                                                          s.seed, part(fieldShare + share, share), true);
-      out.vertexOcclusion.insert(out.vertexOcclusion.end(), back.begin(), back.end());
-    }
+    const int sides = out.info.selfOcclusionBack ? 2 : 1;
+    SelfOcclusion self = bakeSelfOcclusion(input, radius, falloff, s.selfOcclusionRays, sides, s.selfRefinements,
+                                           s.threads, s.seed, part(fieldShare, 1.0 - fieldShare));
+    out.info.selfPointCount = static_cast<std::uint32_t>(self.points.pointCount());
+    out.vertexOcclusion = std::move(self.values);
+    out.selfPoints = std::make_shared<const CreaseSplit>(std::move(self.points));
   }
   out.info.bakeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

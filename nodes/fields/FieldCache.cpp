@@ -8,6 +8,7 @@
 #include "fields/FieldBaker.h"
 #include "fields/FieldFile.h"
 #include "fields/FieldResolution.h"
+#include "fields/SelfOcclusionBake.h"
 #include "output/AtomicFile.h"
 
 namespace aokit {
@@ -39,6 +40,7 @@ std::uint64_t bakeKey(const FieldBakeInfo& i) {
   h = mixIn(h, i.fadeCells);
   h = mixIn(h, i.padding);
   h = mixIn(h, i.selfOcclusionRays);
+  h = mixIn(h, i.selfRefinements);
   h = mixIn(h, static_cast<int>(i.selfOcclusionBack));
   h = mixIn(h, i.seed);
   h = mixIn(h, i.meshHash);
@@ -79,6 +81,11 @@ CachedField FieldCache::getOrBake(const BakeMesh& mesh, const FieldBakeSettings&
     try {
       BakedField f = readFieldFile(out.path);
       checkFieldMatches(f.info, mesh.hash(), radius, falloff, out.path);
+      // Self-occlusion on split or refined points: the values must rebuild them (a file of another
+      // refinement would not), or it is baked again; the points are kept for the technique.
+      if (!f.vertexOcclusion.empty() && f.info.selfPointCount != f.info.vertexCount)
+        f.selfPoints = std::make_shared<const CreaseSplit>(selfOcclusionPoints(
+            mesh.mesh(), f.vertexOcclusion, f.info.selfOcclusionBack ? 2 : 1, f.info.radius, f.info.selfRefinements));
       out.field = std::move(f);
       out.hit = true;
       return out;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "fields/ContentHash.h"
+#include "fields/SelfOcclusionBake.h"
 #include "output/AtomicFile.h"
 #include "reference/Falloff.h"
 
@@ -98,6 +99,7 @@ Header encode(const BakedField& f, std::uint64_t payloadBytes, std::uint64_t pay
   h.u64(224, payloadBytes);
   h.u64(232, payloadChecksum);
   h.u32(240, i.selfPointCount);
+  h.u32(244, static_cast<std::uint32_t>(i.selfRefinements));
   h.u64(248, fnv1a(h.bytes, 248));
   return h;
 }
@@ -136,9 +138,15 @@ BakedField decode(const Header& h, const std::string& path, std::uint64_t& paylo
     fail(path, "vertex or triangle count is absurd (" + std::to_string(i.vertexCount) + ", " +
                    std::to_string(i.triangleCount) + ")");
   i.selfPointCount = h.u32(240);
-  // Copies at creases: at most one a triangle corner.
-  if (selfRays > 0 ? i.selfPointCount < i.vertexCount ||
-                         i.selfPointCount - i.vertexCount > 3ull * i.triangleCount
+  const std::uint32_t refinements = h.u32(244);
+  if (refinements > static_cast<std::uint32_t>(kMaxSelfRefinements) || (selfRays == 0 && refinements != 0))
+    fail(path, "self-occlusion refinement rounds " + std::to_string(refinements) + " are out of range");
+  i.selfRefinements = static_cast<int>(refinements);
+  // Copies at creases: at most one a triangle corner; midpoints: at most one an edge of each round's
+  // triangles (each round at most quadruples them).
+  const std::uint64_t extraPoints =
+      3ull * i.triangleCount + ((1ull << (2 * refinements)) - 1) * i.triangleCount;
+  if (selfRays > 0 ? i.selfPointCount < i.vertexCount || i.selfPointCount - i.vertexCount > extraPoints
                    : i.selfPointCount != 0)
     fail(path, "self-occlusion point count " + std::to_string(i.selfPointCount) + " does not fit " +
                    std::to_string(i.vertexCount) + " vertices and " + std::to_string(i.triangleCount) + " triangles");

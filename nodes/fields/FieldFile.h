@@ -1,9 +1,9 @@
 #pragma once
 // Field files: one baked occluder (BakedField) in a versioned binary file.
 //
-// Layout, version 3, little-endian, a 256-byte header then the payload:
+// Layout, version 4, little-endian, a 256-byte header then the payload:
 //    0  char[8]  "AOKFIELD"
-//    8  u32      version (3; 2 had no crease copies, 1 no back-side flag)
+//    8  u32      version (4; 3 had no refinement midpoints, 2 no crease copies, 1 no back-side flag)
 //   12  u32 kind (0 cube, 1 grid6, 2 grid4)     16  u32 resolution     20  u32 falloff (Falloff order)
 //   24  u32 supersampling    28  u32 radialSamples    32  u32 raysPerSample    36  u32 gridRays
 //   40  u32 flags: 1 blur, 2 selfOcclusionBack      44  u32 selfOcclusionRays (0: none)
@@ -13,8 +13,9 @@
 //  120  f64[3] cube centre   144  f64 boundingRadius   152  f64 fadeStart   160  f64 fadeEnd
 //  168  f64[3] grid origin   192  f64[3] grid size      216  f64 rMax (cube cull radius)
 //  224  u64 payloadBytes     232  u64 payload checksum (FNV-1a)
-//  240  u32 selfPointCount (the vertices and their copies at creases, core/CreaseSplit.h; 0: none)
-//  244  u32 zero             248  u64 header checksum (FNV-1a of 0..247)
+//  240  u32 selfPointCount (the vertices, their copies at creases and the refinement's midpoints:
+//           fields/SelfOcclusionBake.h; 0: none)
+//  244  u32 selfRefinements (rounds, 0..kMaxSelfRefinements)   248  u64 header checksum (FNV-1a of 0..247)
 //  256  payload, float32: cube: occlusion texels then centroid texels (RadialField.h);
 //       grid: texels (GridField.h); then selfPointCount self-occlusion floats when selfOcclusionRays > 0,
 //       and selfPointCount more (the back side's) with flag 2.
@@ -29,7 +30,7 @@
 
 namespace aokit {
 
-constexpr std::uint32_t kFieldFileVersion = 3;
+constexpr std::uint32_t kFieldFileVersion = 4;
 constexpr std::size_t kFieldHeaderBytes = 256;
 
 // Writes atomically (output/AtomicFile.h): a failed or interrupted write leaves no file.

@@ -9,6 +9,7 @@
 
 #include "core/AOScene.h"
 #include "core/CreaseSplit.h"
+#include "fields/SelfOcclusionBake.h"
 #include "core/Geometry.h"
 #include "core/Scene.h"
 #include "render/ActorKeys.h"
@@ -97,7 +98,8 @@ void FieldTechnique::applySelfOcclusion(vtkRenderer* renderer) {
     if (!fields_[o.field]->vertexOcclusion.empty()) byId[o.instanceId] = &o;
   if (FieldPass* p = pass()) p->SetBakedAO(!byId.empty());
   if (byId.empty()) return;
-  std::map<std::size_t, CreaseSplit> splits;  // per field baked with crease copies, as the bake split its mesh
+  // Per field: the points its values are on, as its bake or the cache left them, else rebuilt.
+  std::map<std::size_t, std::shared_ptr<const CreaseSplit>> splits;
   vtkActorCollection* actors = renderer->GetActors();
   actors->InitTraversal();
   while (vtkActor* a = actors->GetNextActor()) {
@@ -107,10 +109,13 @@ void FieldTechnique::applySelfOcclusion(vtkRenderer* renderer) {
     if (field.info.selfPointCount == field.info.vertexCount) {
       setBakedAO(a, field.vertexOcclusion);
     } else {
-      auto split = splits.find(it->second->field);
-      if (split == splits.end())
-        split = splits.emplace(it->second->field, splitAtCreases(*plannedMesh_[byInstance_.at(it->first)])).first;
-      setBakedAO(a, field.vertexOcclusion, split->second);
+      std::shared_ptr<const CreaseSplit>& points = splits[it->second->field];
+      if (!points) points = field.selfPoints;
+      if (!points)
+        points = std::make_shared<const CreaseSplit>(
+            selfOcclusionPoints(*plannedMesh_[byInstance_.at(it->first)], field.vertexOcclusion,
+                                field.info.selfOcclusionBack ? 2 : 1, field.info.radius, field.info.selfRefinements));
+      setBakedAO(a, field.vertexOcclusion, *points);
     }
     selfShaded_.push_back(a);
   }

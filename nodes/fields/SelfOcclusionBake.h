@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/AOScene.h"
+#include "core/CreaseSplit.h"
 #include "fields/BakeMesh.h"
 
 namespace aokit {
@@ -19,5 +20,24 @@ namespace aokit {
 std::vector<float> bakeVertexOcclusion(const BakeMesh& mesh, double radius, Falloff falloff, int rays,
                                        int threads = 0, std::uint64_t seed = 1,
                                        const std::function<void(double)>& progress = {}, bool backSide = false);
+
+// The field's self-occlusion: the crease split baked (on one side, or both: every point's front
+// value, then every point's back value), then refined where the values step by more than
+// kSelfRefineStep (core/BakeRefinement.h; `refinements` rounds, edges down to R / kSelfRefineMinEdge)
+// and the new points baked, so contacts finer than the vertex spacing are drawn where they are.
+struct SelfOcclusion {
+  CreaseSplit points;
+  std::vector<float> values;  // sides x points.pointCount()
+};
+constexpr int kMaxSelfRefinements = 3;
+constexpr float kSelfRefineStep = 0.03f;
+constexpr double kSelfRefineMinEdge = 64.0;
+SelfOcclusion bakeSelfOcclusion(const BakeMesh& mesh, double radius, Falloff falloff, int rays, int sides,
+                                int refinements, int threads = 0, std::uint64_t seed = 1,
+                                const std::function<void(double)>& progress = {});
+// The points bakeSelfOcclusion baked on, rebuilt from its values (a field file stores the values
+// only). Throws std::invalid_argument when the values do not fit the mesh's refinement.
+CreaseSplit selfOcclusionPoints(const TriangleMesh& mesh, const std::vector<float>& values, int sides, double radius,
+                                int refinements);
 
 }  // namespace aokit

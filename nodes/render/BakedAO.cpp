@@ -2,6 +2,7 @@
 
 #include "core/CreaseSplit.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
+#include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkInformationObjectBaseKey.h>
 #include <vtkNew.h>
@@ -118,28 +120,81 @@ void splitCells(vtkCellArray* in, vtkCellArray* out, const CreaseSplit& split, s
   }
 }
 
-// The source with the split's copies after its points, its polygons and strips on them.
+// A refined split's polygon and strip cells as its triangles, one cell each (with the cell data of
+// the cell they lie in): cells are numbered verts, lines, polys, strips, as vtkPolyData does.
+void refinedCells(vtkPolyData* source, vtkPolyData* copy, const CreaseSplit& split) {
+  vtkCellData* from = source->GetCellData();
+  vtkCellData* to = copy->GetCellData();
+  const vtkIdType verts = source->GetNumberOfVerts(), lines = source->GetNumberOfLines();
+  to->CopyAllOn();
+  to->CopyAllocate(from, verts + lines + static_cast<vtkIdType>(split.triangles.size()));
+  for (vtkIdType c = 0; c < verts + lines; ++c) to->CopyData(from, c, c);
+  vtkNew<vtkCellArray> polys;
+  vtkIdType cell = verts + lines;  // the source's cell holding the current triangle
+  std::size_t meshTriangle = 0, refined = 0;
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  for (vtkCellArray* cells : {source->GetPolys(), source->GetStrips()})
+    for (cells->InitTraversal(); cells->GetNextCell(count, ids); ++cell) {
+      const std::size_t end = meshTriangle + static_cast<std::size_t>(std::max<vtkIdType>(count - 2, 0));
+      for (; refined < split.triangles.size() && split.parent[refined] < end; ++refined) {
+        if (split.parent[refined] < meshTriangle) splitMismatch();
+        const glm::uvec3& t = split.triangles[refined];
+        const vtkIdType corners[3] = {t.x, t.y, t.z};
+        to->CopyData(from, cell, verts + lines + polys->InsertNextCell(3, corners));
+      }
+      meshTriangle = end;
+    }
+  if (refined != split.triangles.size()) splitMismatch();
+  copy->SetPolys(polys);
+}
+
+// The source with the split's copies after its points, its polygons and strips on them. The
+// refinement's midpoints come last, their coordinates and point data interpolated.
 vtkSmartPointer<vtkPolyData> splitCopy(vtkPolyData* source, const CreaseSplit& split) {
   const vtkIdType n = source->GetNumberOfPoints(), total = static_cast<vtkIdType>(split.pointCount());
   if (split.vertexCount != static_cast<std::uint32_t>(n))
     throw std::invalid_argument("baked AO: a crease split of " + std::to_string(split.vertexCount) +
                                 " vertices for " + std::to_string(n) + " points");
+  const vtkIdType copies = n + static_cast<vtkIdType>(split.origin.size());
   auto origin = [&](vtkIdType p) { return p < n ? p : static_cast<vtkIdType>(split.origin[static_cast<std::size_t>(p - n)]); };
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataType(source->GetPoints()->GetDataType());
   points->SetNumberOfPoints(total);
-  for (vtkIdType p = 0; p < total; ++p) points->SetPoint(p, source->GetPoint(origin(p)));
-  copy->SetPoints(points);
+  for (vtkIdType p = 0; p < copies; ++p) points->SetPoint(p, source->GetPoint(origin(p)));
   vtkPointData* from = source->GetPointData();
   vtkPointData* to = copy->GetPointData();
   to->CopyAllOn();
-  to->CopyAllocate(from, total);
-  for (vtkIdType p = 0; p < total; ++p) to->CopyData(from, origin(p), p);
-  copy->GetCellData()->ShallowCopy(source->GetCellData());
+  if (split.midpoints.empty())
+    to->CopyAllocate(from, total);
+  else
+    to->InterpolateAllocate(from, total);
+  for (vtkIdType p = 0; p < copies; ++p) to->CopyData(from, origin(p), p);
+  vtkNew<vtkIdList> corners;
+  corners->SetNumberOfIds(3);
+  for (vtkIdType p = copies; p < total; ++p) {
+    const SplitMidpoint& m = split.midpoints[static_cast<std::size_t>(p - copies)];
+    double at[3] = {0.0, 0.0, 0.0}, weights[3];
+    for (int i = 0; i < 3; ++i) {
+      if (m.vertices[i] >= static_cast<std::uint32_t>(n)) splitMismatch();
+      corners->SetId(i, m.vertices[i]);
+      weights[i] = m.weights[i];
+      const double* x = source->GetPoint(m.vertices[i]);
+      for (int k = 0; k < 3; ++k) at[k] += weights[i] * x[k];
+    }
+    points->SetPoint(p, at);
+    to->InterpolatePoint(from, p, corners, weights);
+  }
+  copy->SetPoints(points);
   copy->GetFieldData()->ShallowCopy(source->GetFieldData());
   copy->SetVerts(source->GetVerts());
   copy->SetLines(source->GetLines());
+  if (!split.midpoints.empty()) {
+    refinedCells(source, copy, split);
+    return copy;
+  }
+  copy->GetCellData()->ShallowCopy(source->GetCellData());
   std::size_t triangle = 0;
   vtkNew<vtkCellArray> polys, strips;
   splitCells(source->GetPolys(), polys, split, triangle);

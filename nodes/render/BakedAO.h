@@ -31,8 +31,11 @@ void setBakedAO(vtkActor* actor, const std::vector<float>& perVertex);
 // triangleMeshOf, core/CreaseSplit.h): the drawn copy then has the split's copies after the
 // source's points (their point data copied from the vertex each copies), and its polygons and
 // strips use them where the split does; vertices, lines, cell order and cell data stay the
-// source's. Pickers on such an actor report the copy's point ids (the source's, or a copy's above
-// its point count). A split without copies is setBakedAO above.
+// source's. A split the bake refined (core/BakeRefinement.h) adds its midpoints last, their
+// coordinates and point data interpolated, and draws its polygons and strips as its triangles, one
+// cell each with the cell data of the cell it lies in (cell ids after the lines then differ from
+// the source's). Pickers on such an actor report the copy's point ids (the source's, or a copy's
+// above its point count). A split without copies or midpoints is setBakedAO above.
 void setBakedAO(vtkActor* actor, const std::vector<float>& perPoint, const CreaseSplit& split);
 // Removes the values again (the G-buffer then reads 0 for this actor).
 void clearBakedAO(vtkActor* actor);
