@@ -19,7 +19,8 @@ std::string FieldConstants::defines(int cubes, int grid) const {
          "\n#define FIELD_MERGE_N " + std::to_string(MergeTable::kSize) +
          "\n#define FIELD_HORIZON_N " + std::to_string(HorizonTable::kSize) +
          "\n#define FIELD_DOWNSAMPLE " + std::to_string(downsample) +
-         "\n#define FIELD_TILE " + std::to_string(FieldCull::kTile) + "\n";
+         "\n#define FIELD_TILE " + std::to_string(FieldCull::kTile) +
+         "\n#define FIELD_BOUNDS_STEP " + std::to_string(FieldCull::kStep) + "\n";
 }
 
 FieldConstants makeFieldConstants(const FieldSettings& s, const FrameContext&) {

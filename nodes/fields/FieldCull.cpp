@@ -13,20 +13,31 @@
 
 namespace aokit {
 
-FieldCull::FieldCull() : stage_("cull", FieldPassBoundsFS) {}
+FieldCull::FieldCull() : cells_("cull", FieldPassBoundsFS), reduce_("cull reduce", FieldPassBoundsFS) {}
 
 bool FieldCull::readTileDepths(const DeferredFrame& f, TileDepths& tiles) {
   tiles.tile = kTile;
   tiles.tilesX = (f.targetWidth + kTile - 1) / kTile;
   tiles.tilesY = (f.targetHeight + kTile - 1) / kTile;
+  const int partial[2] = {(f.targetWidth + kStep - 1) / kStep, (f.targetHeight + kStep - 1) / kStep};
+  ensureTexture2D(partial_, f.renWin, TexFormat::RG32F, partial[0], partial[1]);
   ensureTexture2D(bounds_, f.renWin, TexFormat::RG32F, tiles.tilesX, tiles.tilesY);
-  vtkShaderProgram* p = stage_.use(f.renWin);
+  const int target[2] = {f.targetWidth, f.targetHeight}, count[2] = {tiles.tilesX, tiles.tilesY};
+  vtkShaderProgram* p = cells_.use(f.renWin);
   if (!p) return false;
   f.bindCommon(p);
-  const int target[2] = {f.targetWidth, f.targetHeight}, count[2] = {tiles.tilesX, tiles.tilesY};
   p->SetUniform2i("fieldTarget", target);
+  p->SetUniform2i("fieldTiles", partial);
+  cells_.renderInto(f.fbo, {partial_});
+  p = reduce_.use(f.renWin);
+  if (!p) return false;
   p->SetUniform2i("fieldTiles", count);
-  stage_.renderInto(f.fbo, {bounds_});
+  p->SetUniform2i("fieldPartialSize", partial);
+  {
+    ActiveTextures input{partial_};
+    p->SetUniformi("fieldPartial", partial_->GetTextureUnit());
+    reduce_.renderInto(f.fbo, {bounds_});
+  }
   // A small read (8 bytes a tile); it waits for the G-buffer, which every later draw reads anyway.
   tiles.zRange.resize(2 * static_cast<std::size_t>(tiles.tilesX) * tiles.tilesY);
   f.state->PushReadFramebufferBinding();
@@ -40,10 +51,12 @@ bool FieldCull::readTileDepths(const DeferredFrame& f, TileDepths& tiles) {
   return true;
 }
 
-std::size_t FieldCull::memoryBytes() const { return textureBytes(bounds_); }
+std::size_t FieldCull::memoryBytes() const { return textureBytes(partial_) + textureBytes(bounds_); }
 
 void FieldCull::release(vtkWindow* w) {
-  stage_.release(w);
+  cells_.release(w);
+  reduce_.release(w);
+  partial_ = nullptr;
   bounds_ = nullptr;
 }
 

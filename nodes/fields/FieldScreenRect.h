@@ -29,8 +29,9 @@ struct TargetGeometry {
 
 TexelRect sphereTexelRect(const glm::dvec3& centreView, double radius, const TargetGeometry& t);
 
-// Depth ranges of the receivers per tile of the AO target (FieldPassBoundsFS.glsl), read back once
-// a frame: zRange[2 (ty tilesX + tx)] = nearest view z, [+1] = farthest (nearest < farthest: none).
+// Depth ranges of what was drawn (a bound on the receivers) per tile of the AO target
+// (FieldPassBoundsFS.glsl), read back once a frame: zRange[2 (ty tilesX + tx)] = nearest view z,
+// [+1] = farthest (nearest < farthest: none).
 struct TileDepths {
   int tile = 16;  // tile side, AO-target texels
   int tilesX = 0, tilesY = 0;
