@@ -184,6 +184,7 @@ float haoOcclusion(vec3 p, vec3 n)
   vec3 t, b;
   haoBasis(n, t, b);
   mat3 m3 = mat3(haoWorldToGrid);
+  vec3 surface = (haoWorldToGrid * vec4(p, 1.0)).xyz;
   vec3 origin = haoLeaveSetVoxel((haoWorldToGrid * vec4(p + haoNormalOffset * n, 1.0)).xyz, normalize(m3 * n));
   float stepLength = haoRadius / float(haoSteps);
   int originK = haoVoxel(origin).z;
@@ -206,7 +207,8 @@ float haoOcclusion(vec3 p, vec3 n)
 #endif
       if (hit)
       {
-        k = haoFalloff(dist);
+        // The falloff's distance from the surface point, not from the lifted origin (as the CPU).
+        k = haoFalloff(length(origin + dist * dir - surface) / length(dir));
         break;
       }
       previousK = g.z;

@@ -110,6 +110,7 @@ TEST(HybridFailureModes, ThinWallsAcrossTheGridsXAxisLeak) {
       hs.gridResolution = 512;
       hs.rays = 64;
       hs.steps = steps;
+      hs.stride = 0.0;  // steps as given
       hs.spanTest = span != 0;
       const HybridMarchConstants c = makeHybridMarchConstants(hs, frameContext(hs.common, R, Falloff::Binary), frame);
       double sum = 0.0;

@@ -54,6 +54,7 @@ HybridSettings settings(int rays, int steps, bool span) {
   s.gridResolution = 512;
   s.rays = rays;
   s.steps = steps;
+  s.stride = 0.0;  // steps as given
   s.spanTest = span;
   return s;
 }
@@ -132,7 +133,7 @@ TEST(HybridMarch, ConstantsFollowSettingsAndFrame) {
   EXPECT_EQ(c.radius, 2.0f);
   EXPECT_EQ(c.falloff, Falloff::Wendland);
   EXPECT_NEAR(c.cosMax, std::cos(0.25 * 3.14159265358979), 1e-6);
-  EXPECT_FLOAT_EQ(c.normalOffset, static_cast<float>(2.0 * ceiling.frame.voxelSize));
+  EXPECT_FLOAT_EQ(c.normalOffset, static_cast<float>(s.normalOffset * ceiling.frame.voxelSize));
   EXPECT_EQ(c.dims, ceiling.frame.dims);
   EXPECT_NE(c.defines().find("#define HAO_RAYS 16\n"), std::string::npos);
   EXPECT_NE(c.defines().find("#define HAO_SPAN_TEST 1\n"), std::string::npos);

@@ -54,7 +54,7 @@ VoxelGrid cpuGrid(Scene& s, const VoxelRegion& region, const HybridSettings& hs)
 
 // The GPU pass and the CPU oracle on the G-buffer the pass drew: same region, the same grid but
 // for round-off voxels, and the same AO but where float round-off moves a ray across a voxel
-// boundary (then one of 32 rays differs: 1/32 before filtering).
+// boundary (then one ray differs: 1/16 of the AO with the default 16 rays, before filtering).
 TEST(HybridPass, MatchesTheCpuOracleOnItsOwnGBuffer) {
   struct Case {
     const char* scene;

@@ -89,6 +89,7 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
   hybridBasis(n, t, b);
   // In grid space: origin and directions go through the matrix once, steps are then additions.
   const glm::mat3 m3(c.worldToGrid);
+  const glm::vec3 surface(c.worldToGrid * glm::vec4(p, 1.0f));
   const glm::vec3 origin = leaveSetVoxel(grid, glm::vec3(c.worldToGrid * glm::vec4(p + c.normalOffset * n, 1.0f)),
                                          glm::normalize(m3 * n), c.dims);
   const float stepLength = c.radius / static_cast<float>(c.steps);
@@ -106,7 +107,10 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
       const bool hit = c.spanTest ? grid.anyInRun(v.x, v.y, std::min(previousK, gk), std::max(previousK, gk))
                                   : grid.get(v.x, v.y, gk);
       if (hit) {
-        k = hybridFalloff(c.falloff, dist, c.radius);
+        // The falloff's distance is the hit's from the surface point, not from the lifted origin
+        // (the reference's rays start on the surface): grid units over |dir| (1 / voxel size).
+        const float fromSurface = glm::length(origin + dist * dir - surface) / glm::length(dir);
+        k = hybridFalloff(c.falloff, fromSurface, c.radius);
         break;  // the GPU keeps stepping (no branch) but adds only the first hit
       }
       previousK = gk;

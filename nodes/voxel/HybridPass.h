@@ -32,7 +32,8 @@
 // all baked there), a dynamic one marches both.
 //
 // Defaults (HybridSettings): grid 256 on the region's longest side, ThreeAxis, solid fill, 64 MiB
-// budget, 32 rays x 8 steps with span tests, normal offset 2 voxels, half resolution, m = 16.
+// budget, 16 rays of at least 8 steps (at most 1.5 voxels each) with span tests, normal offset
+// 1.5 voxels, the falloff from the surface point, half resolution, m = 16.
 #include <memory>
 #include <string>
 
