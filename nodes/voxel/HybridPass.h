@@ -31,9 +31,9 @@
 // all outside the zones of the dynamic casters (each one's bounds grown by R: its occlusion is
 // all baked there), a dynamic one marches both.
 //
-// Defaults (HybridSettings): grid 256 on the region's longest side, ThreeAxis, solid fill, 64 MiB
-// budget, 16 rays of at least 8 steps (at most 1.5 voxels each) with span tests, normal offset
-// 1.5 voxels, the falloff from the surface point, half resolution, m = 16.
+// Defaults (HybridSettings): grid 256 on the region's longest side, DominantAxis, solid fill,
+// 64 MiB budget, 16 rays of at least 8 steps (at most one voxel each) with span tests, normal
+// offset 1 voxel, the falloff from the surface point, half resolution, m = 16.
 #include <memory>
 #include <string>
 

@@ -31,7 +31,9 @@ struct HybridSettings {
   // Voxel grid.
   int gridResolution = 256;         //!< voxels along the region's longest side
   double memoryBudgetMiB = 64.0;    //!< MiB the grid may hold; 512^3 = 16 MiB, 1024^3 = 128 MiB
-  VoxelizingFrame frame = VoxelizingFrame::ThreeAxis;
+  VoxelizingFrame frame = VoxelizingFrame::DominantAxis;  //!< one voxel per column centre along each
+                                    //!<   triangle's dominant axis: casters not fattened by up to a
+                                    //!<   voxel each side (ThreeAxis, conservative) over-occlude gaps
   std::uint32_t frameSeed = 1;      //!< Rotated: seed of the random rotation (e.g. the frame number)
   bool solid = true;                //!< fill the inside of watertight casters (parity, SolidVoxelizer.h)
                                     //!<   so that long steps cannot pass through a hollow shell
@@ -46,7 +48,7 @@ struct HybridSettings {
   int rays = 16;                    //!< rays per AO-map pixel (seed Table 1: 32; hybrid's error is
                                     //!<   nearly all bias, so 16 lose little and pay for the stride)
   int steps = 8;                    //!< grid tests per ray, evenly spaced over R (seed: 8)
-  double stride = 1.5;              //!< most voxels one step may cross: where R / steps is longer
+  double stride = 1.0;              //!< most voxels one step may cross: where R / steps is longer
                                     //!<   on the grid, the ray takes more steps (up to 256), since
                                     //!<   a sheet thinner than a step across the grid's x or y is
                                     //!<   stepped over (open boxes, clipped isosurfaces; a finer grid
@@ -59,7 +61,7 @@ struct HybridSettings {
   double spread = 1.0;              //!< cone half-angle as a fraction of 90 degrees; 1 = the whole
                                     //!<   hemisphere (what the reference integrates); the seed's
                                     //!<   Figure 4 shows 0.25..0.75
-  double normalOffset = 1.5;        //!< ray origins lifted along the normal, in voxels; below
+  double normalOffset = 1.0;        //!< ray origins lifted along the normal, in voxels; below
                                     //!<   sqrt(3) the origin's own voxel can hold the surface (the
                                     //!<   march then leaves it for an empty neighbour); 1.25 loses
                                     //!<   the isosurface's thin sheets, 2 darkens contacts
