@@ -129,6 +129,7 @@ TEST(VoxelRegion, BudgetCutsTheFarFieldAndKeepsTheNearOne) {
 TEST(VoxelRegion, FixedBoxAndEmptyCases) {
   const ViewFrustum f = frontView();
   HybridSettings s;
+  s.gridResolution = 256;  // the figures below, not the default, are what this checks
   s.snapToLattice = false;
   s.regionBox = box({-2, 2, -2}, {2, 6, 2});
   const std::vector<Bounds> casters = {box({-1, 4, -1}, {1, 5, 1}), box({10, 10, 10}, {11, 11, 11}), Bounds{}};
