@@ -25,6 +25,7 @@ runs=(
   "hybrid|res=128,rays=8,steps=4,scale=0.25,window=16" "hybrid|res=256,rays=12,steps=5,scale=0.25,window=12"
   "hybrid|res=256,rays=16,steps=6,scale=0.25,window=16" "hybrid|res=256,rays=16,steps=8" "hybrid|"
   "hybrid|frame=rotated,res=128" "hybrid|frame=dominant,span=0,res=128" "hybrid|res=128,window=4,hn=2"
+  "hybrid|lift=ray,res=128" "hybrid|lift=graze,reach=2,res=128"
 )
 scenes=(sphere-plane sphere-offscreen cubes tank stack corridor room open-box bunny fandisk hidden behind)
 extra=("courtyard|hybrid|static=1,res=128")  # scene|method|setting

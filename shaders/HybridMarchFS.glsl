@@ -19,6 +19,7 @@
 // dynamic receiver marches both grids, ORed word for word.
 //AOKIT::Defines
 //AOKIT::DeferredCommon
+#define HAO_NO_STEP -1000000  // HAO_LIFT 1, 2: no step tested yet
 uniform usampler2D haoGrid;   // R32UI, 4 nx x (ny slabs): texel (4 i + c, s ny + j)
 uniform int haoDimsV[3];     // grid dimensions (vtkShaderProgram sets no ivec3)
 #define haoDims ivec3(haoDimsV[0], haoDimsV[1], haoDimsV[2])
@@ -28,6 +29,7 @@ uniform float haoRadius;      // R, world units
 uniform int haoSteps;         // steps per ray (a uniform: the grid's voxel size can raise it)
 uniform float haoCosMax;      // cos of the cone's half-angle
 uniform float haoNormalOffset;  // world units
+uniform float haoReach;         // RayLift::Graze: a ray's lift is offset (1 - reach cos), at least 0
 uniform float haoInvCell;     // 1 / jitter cell, 1 / world units
 uniform int haoSeedBits;      // the jitter seed's bits
 #define haoSeed uint(haoSeedBits)
@@ -185,7 +187,15 @@ float haoOcclusion(vec3 p, vec3 n)
   haoBasis(n, t, b);
   mat3 m3 = mat3(haoWorldToGrid);
   vec3 surface = (haoWorldToGrid * vec4(p, 1.0)).xyz;
-  vec3 origin = haoLeaveSetVoxel((haoWorldToGrid * vec4(p + haoNormalOffset * n, 1.0)).xyz, normalize(m3 * n));
+  vec3 lifted = (haoWorldToGrid * vec4(p + haoNormalOffset * n, 1.0)).xyz;
+#if HAO_LIFT != 0
+  // Ray and Graze start on the surface, except in a crease (as the CPU's marchHybridAO).
+  ivec3 lv = haoVoxel(lifted);
+  bool fromSurface = !haoAnyInRun(lv.x, lv.y, lv.z, lv.z);
+  vec3 origin = fromSurface ? surface : haoLeaveSetVoxel(lifted, normalize(m3 * n));
+#else
+  vec3 origin = haoLeaveSetVoxel(lifted, normalize(m3 * n));
+#endif
   float stepLength = haoRadius / float(haoSteps);
   int originK = haoVoxel(origin).z;
   float sum = 0.0, weights = 0.0;
@@ -195,11 +205,23 @@ float haoOcclusion(vec3 p, vec3 n)
     vec3 dir = m3 * (local.x * t + local.y * b + local.z * n);
     float offset = fract(jitter.z + float(i) * 0.754878);
     float k = 0.0;
+#if HAO_LIFT != 0
+    // Ray and Graze: this ray's lift along the normal, then steps below the offset skipped.
+    float lift = fromSurface && HAO_LIFT == 2 ? haoNormalOffset * max(0.0, 1.0 - haoReach * local.z) : 0.0;
+    vec3 rayOrigin = origin + lift * (m3 * n);
+    int previousK = fromSurface ? HAO_NO_STEP : originK;
+#else
+    vec3 rayOrigin = origin;
     int previousK = originK;
+#endif
     for (int j = 0; j < haoSteps; ++j)
     {
       float dist = (float(j) + offset) * stepLength;
-      ivec3 g = haoVoxel(origin + dist * dir);
+#if HAO_LIFT != 0
+      if (fromSurface && lift + dist * local.z < haoNormalOffset) continue;  // within the surface's own voxels
+#endif
+      ivec3 g = haoVoxel(rayOrigin + dist * dir);
+      if (previousK == HAO_NO_STEP) previousK = g.z;  // the first step tested spans its own voxel
 #if HAO_SPAN_TEST
       bool hit = haoAnyInRun(g.x, g.y, min(previousK, g.z), max(previousK, g.z));
 #else
@@ -208,7 +230,7 @@ float haoOcclusion(vec3 p, vec3 n)
       if (hit)
       {
         // The falloff's distance from the surface point, not from the lifted origin (as the CPU).
-        k = haoFalloff(length(origin + dist * dir - surface) / length(dir));
+        k = haoFalloff(length(rayOrigin + dist * dir - surface) / length(dir));
         break;
       }
       previousK = g.z;

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <utility>
 
 #include "core/Geometry.h"
 #include "core/Scene.h"
@@ -152,4 +154,47 @@ TEST(HybridMarch, StrideRaisesStepsWithinTheSettingAnd256) {
   EXPECT_EQ(marchSteps(s, 1.0, 0.01), 40);   // 100 voxels over R, 2.5 a step
   EXPECT_EQ(marchSteps(s, 1.0, 0.0099), 41); // rounded up
   EXPECT_EQ(marchSteps(s, 1.0, 1e-6), 256);  // never more than the setting's range
+}
+
+// A floor under a low ceiling (about four voxels up): the normal lift sees the ceiling from a voxel
+// higher (parallax: more occlusion than the closed form); rays from the surface (lift=ray, graze)
+// see it from the floor, and skip the floor's own voxels (a floor alone: no occlusion).
+TEST(HybridMarch, LiftsFromTheSurfaceSeeALowCeilingWithoutParallax) {
+  const double H = 0.1, R = 0.3;
+  auto build = [&](bool ceiling) {
+    Scene scene;
+    addPlaced(*scene.root, makeBox({6.0, 6.0, 0.3}), translation({0.0, 0.0, -0.15}), glm::vec3(1.0f));
+    if (ceiling) addPlaced(*scene.root, makeBox({6.0, 6.0, 0.3}), translation({0.0, 0.0, H + 0.15}), glm::vec3(1.0f));
+    Bounds region;
+    region.extend(glm::dvec3(-1.5, -1.5, -0.3));
+    region.extend(glm::dvec3(1.5, 1.5, H + 0.4));
+    const VoxelFrame frame = VoxelFrame::fitting(region, 128);
+    return std::make_pair(frame, voxelizeInstances(collectInstances(*scene.root), frame, VoxelizeMethod::ThreeAxis, true));
+  };
+  const auto [frame, grid] = build(true);
+  const auto [floorFrame, floorGrid] = build(false);
+  const double voxel = frame.voxelSize;
+  const double exact = ceilingAO(Falloff::Wendland, H, R);
+  auto mean = [&](const VoxelGrid& g, const VoxelFrame& f, RayLift lift) {
+    HybridSettings s = settings(256, 64, true);
+    s.common.falloff = Falloff::Wendland;
+    s.lift = lift;
+    const HybridMarchConstants c = makeHybridMarchConstants(s, frameContext(s.common, R, Falloff::Binary), f);
+    double sum = 0.0;
+    for (int i = 0; i < 64; ++i) sum += marchHybridAO(g, c, glm::vec3(0.013f * i - 0.4f, 0.007f * i, 0.0f), {0, 0, 1});
+    return sum / 64;
+  };
+  const double normal = mean(grid, frame, RayLift::Normal);
+  std::printf("ceiling %.1f voxels up, closed form %.4f: normal %.4f", H / voxel, exact, normal);
+  for (RayLift lift : {RayLift::Ray, RayLift::Graze}) {
+    const double got = mean(grid, frame, lift), alone = mean(floorGrid, floorFrame, lift);
+    std::printf(", %s %.4f (floor alone %.4f)", lift == RayLift::Ray ? "ray" : "graze", got, alone);
+    // The ceiling's voxels reach up to a voxel below it: between the closed forms at H and H - 1 voxel.
+    EXPECT_GT(got, exact - 0.02);
+    EXPECT_LT(got, ceilingAO(Falloff::Wendland, H - voxel, R) + 0.02);
+    EXPECT_LT(std::abs(got - exact), std::abs(normal - exact) - 0.03);  // measured: 0.053, 0.074 against 0.114
+    EXPECT_LT(alone, 0.005);
+  }
+  std::printf("\n");
+  EXPECT_GT(normal, exact + 0.08);  // the parallax the lifts reduce
 }

@@ -16,6 +16,7 @@ std::string HybridMarchConstants::defines() const {
   d << "#define HAO_RAYS " << rays << "\n"
     << "#define HAO_FALLOFF " << static_cast<int>(falloff) << "\n"
     << "#define HAO_SPAN_TEST " << int(spanTest) << "\n"
+    << "#define HAO_LIFT " << lift << "\n"
     << "#define HAO_STATIC " << int(staticDynamic) << "\n"
     << "#define HAO_MAX_ZONES " << kMaxDynamicZones << "\n";
   return d.str();
@@ -40,10 +41,12 @@ HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const Fra
   c.steps = marchSteps(s, R, frame.voxelSize);
   c.falloff = context.falloff;
   c.spanTest = s.spanTest;
+  c.lift = static_cast<int>(s.lift);
   c.radius = static_cast<float>(R);
   c.cosMax = static_cast<float>(std::max(0.0, std::cos(s.spread * 1.5707963267948966)));
   if (s.spread >= 1.0) c.cosMax = 0.0f;
   c.normalOffset = static_cast<float>(s.normalOffset * frame.voxelSize);
+  c.reach = static_cast<float>(s.reach);
   c.invJitterCell = static_cast<float>(1.0 / (s.jitterCell * frame.voxelSize));
   c.jitterSeed = s.jitterSeed;
   c.worldToGrid = frame.worldToGridMatrix();
@@ -79,6 +82,7 @@ glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const gl
   }
   return origin + best;
 }
+constexpr int kNoStep = -1000000;  // RayLift::Ray: no step tested yet
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
@@ -90,8 +94,13 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
   // In grid space: origin and directions go through the matrix once, steps are then additions.
   const glm::mat3 m3(c.worldToGrid);
   const glm::vec3 surface(c.worldToGrid * glm::vec4(p, 1.0f));
-  const glm::vec3 origin = leaveSetVoxel(grid, glm::vec3(c.worldToGrid * glm::vec4(p + c.normalOffset * n, 1.0f)),
-                                         glm::normalize(m3 * n), c.dims);
+  const glm::vec3 nGrid = m3 * n;  // grid units per world unit along the normal
+  const glm::vec3 lifted(c.worldToGrid * glm::vec4(p + c.normalOffset * n, 1.0f));
+  const glm::ivec3 liftedVoxel = voxelOf(lifted, c.dims);
+  // Ray and Graze start on the surface, except in a crease (the lifted point's voxel set: another
+  // surface within the offset, which their skipped steps would miss): there as Normal.
+  const bool fromSurface = c.lift != 0 && !grid.anyInRun(liftedVoxel.x, liftedVoxel.y, liftedVoxel.z, liftedVoxel.z);
+  const glm::vec3 origin = fromSurface ? surface : leaveSetVoxel(grid, lifted, glm::normalize(nGrid), c.dims);
   const float stepLength = c.radius / static_cast<float>(c.steps);
   float sum = 0.0f, weights = 0.0f;
   for (int i = 0; i < c.rays; ++i) {
@@ -99,17 +108,22 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
     const glm::vec3 dir = m3 * (local.x * t + local.y * b + local.z * n);
     const float offset = hybridStepOffset(i, jitter.z);
     float k = 0.0f;
-    int previousK = voxelOf(origin, c.dims).z;
+    // Ray and Graze: this ray's lift along the normal (grid units), then steps below the offset skipped.
+    const float lift = fromSurface && c.lift == 2 ? c.normalOffset * std::max(0.0f, 1.0f - c.reach * local.z) : 0.0f;
+    const glm::vec3 rayOrigin = origin + lift * nGrid;
+    int previousK = fromSurface ? kNoStep : voxelOf(origin, c.dims).z;
     for (int j = 0; j < c.steps; ++j) {
       const float dist = (static_cast<float>(j) + offset) * stepLength;
-      const glm::ivec3 v = voxelOf(origin + dist * dir, c.dims);
+      if (fromSurface && lift + dist * local.z < c.normalOffset) continue;  // within the surface's own voxels
+      const glm::ivec3 v = voxelOf(rayOrigin + dist * dir, c.dims);
       const int gk = v.z;
+      if (previousK == kNoStep) previousK = gk;  // the first step tested spans its own voxel
       const bool hit = c.spanTest ? grid.anyInRun(v.x, v.y, std::min(previousK, gk), std::max(previousK, gk))
                                   : grid.get(v.x, v.y, gk);
       if (hit) {
         // The falloff's distance is the hit's from the surface point, not from the lifted origin
         // (the reference's rays start on the surface): grid units over |dir| (1 / voxel size).
-        const float fromSurface = glm::length(origin + dist * dir - surface) / glm::length(dir);
+        const float fromSurface = glm::length(rayOrigin + dist * dir - surface) / glm::length(dir);
         k = hybridFalloff(c.falloff, fromSurface, c.radius);
         break;  // the GPU keeps stepping (no branch) but adds only the first hit
       }

@@ -28,10 +28,12 @@ struct HybridMarchConstants {
   int steps = 0;                      // uniform haoSteps (marchSteps: the grid can raise it)
   Falloff falloff = Falloff::Binary;  // #define HAO_FALLOFF (0 binary, 1 wendland, 2 sqrt, 3 exponential)
   bool spanTest = true;               // #define HAO_SPAN_TEST
+  int lift = 0;                       // #define HAO_LIFT (RayLift: 0 normal, 1 ray, 2 graze)
   bool staticDynamic = false;         // #define HAO_STATIC (GPU: a second, static grid; StaticDynamic.h)
   float radius = 1.0f;                // world units
   float cosMax = 0.0f;                // cos of the cone half-angle: cos(spread * 90 deg), >= 0
   float normalOffset = 0.0f;          // world units
+  float reach = 1.0f;                 // uniform haoReach (RayLift::Graze)
   float invJitterCell = 1.0f;         // 1 / world units
   std::uint32_t jitterSeed = 0;
   glm::mat4 worldToGrid{1.0f};

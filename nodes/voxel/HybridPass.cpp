@@ -45,6 +45,7 @@ std::string HybridPass::MarchDefines(const FrameContext& context) const {
   c.rays = Settings.rays;
   c.falloff = context.falloff;
   c.spanTest = Settings.spanTest;
+  c.lift = static_cast<int>(Settings.lift);
   c.staticDynamic = Settings.staticBake;
   return c.defines();
 }
@@ -99,6 +100,7 @@ vtkTextureObject* HybridPass::RenderAO(DeferredFrame& f) {
   p->SetUniformi("haoSteps", c.steps);
   p->SetUniformf("haoCosMax", c.cosMax);
   p->SetUniformf("haoNormalOffset", c.normalOffset);
+  p->SetUniformf("haoReach", c.reach);
   p->SetUniformf("haoInvCell", c.invJitterCell);
   // A still frame of a running mean draws new jitter: the seed mixed with the frame's index.
   const std::uint32_t seed = f.accumulated == 0 ? c.jitterSeed : c.jitterSeed ^ (0x9E3779B9u * static_cast<std::uint32_t>(f.accumulated));

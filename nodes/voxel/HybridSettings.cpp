@@ -67,6 +67,11 @@ const Schema<HybridSettings>& hybridSchema() {
     t.flag("span", &S::spanTest, "each step tests the voxels since the last one in its column");
     t.number("spread", &S::spread, Interval::aboveZero(1), "cone half-angle, fraction of 90 degrees");
     t.number("offset", &S::normalOffset, Interval::closed(0, 4), "ray origins lifted along the normal, voxels");
+    t.choice("lift", &S::lift, {{"normal", RayLift::Normal}, {"ray", RayLift::Ray}, {"graze", RayLift::Graze}},
+             "normal: ray origins lifted along the normal by the offset; ray: rays from the surface, "
+             "steps below the offset above its tangent plane skipped; graze: each ray lifted by offset (1 - cos), "
+             "then as ray");
+    t.number("reach", &S::reach, Interval::closed(1, 64), "graze: each ray lifted by offset (1 - reach cos), at least 0");
     t.number("cell", &S::jitterCell, Interval::aboveZero(16), "object-space jitter cell, voxels");
     t.integer("noise", &S::jitterSeed, 0, 4294967295LL, "seed of the jitter noise pattern");
     t.flag("static", &S::staticBake,

@@ -23,6 +23,17 @@ enum class VoxelizingFrame {
                  // column centre: thin like the seed's, nothing lost (needs image atomics too)
 };
 
+// How a ray leaves its own surface's voxels.
+enum class RayLift {
+  Normal,  // the seed's: the origin lifted along the normal by the offset (near casters seen from
+           // the lifted point look larger: two tubes a voxel apart over-occlude by half)
+  Ray,     // the ray starts on the surface; steps lower than the offset above its tangent plane
+           // are not tested (rays as the reference's; the lowest offset of grazing rays is lost)
+  Graze,   // between: each ray's origin lifted by offset max(0, 1 - reach cos theta) along the
+           // normal, steps lower than the offset above the tangent plane not tested (little
+           // parallax for rays near the normal, grazing rays start above the surface's voxels)
+};           // Ray and Graze march as Normal where the lifted point's voxel is set (a crease).
+
 struct HybridSettings {
   DeferredSettings common = deferredDefaults(AOScale::Half, 16);  //!< radius, falloff (the seed uses
                                     //!<   Wendland), half resolution, bilateral window m = 16 (the
@@ -67,6 +78,8 @@ struct HybridSettings {
                                     //!<   sqrt(3) the origin's own voxel can hold the surface (the
                                     //!<   march then leaves it for an empty neighbour); 1.25 loses
                                     //!<   the isosurface's thin sheets, 2 darkens contacts
+  RayLift lift = RayLift::Normal;    //!< how rays leave their surface's voxels (above)
+  double reach = 1.0;               //!< graze: a ray's lift is offset (1 - reach cos theta), at least 0
   double jitterCell = 0.25;         //!< cell of the object-space jitter noise, in voxels
   std::uint32_t jitterSeed = 0;     //!< any value; changes the noise pattern
 
