@@ -82,7 +82,7 @@ glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const gl
   }
   return origin + best;
 }
-constexpr int kNoStep = -1000000;  // RayLift::Ray: no step tested yet
+constexpr int kNoStep = -1000000;  // RayLift::Ray, Graze: no step tested yet
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
@@ -108,7 +108,7 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
     const glm::vec3 dir = m3 * (local.x * t + local.y * b + local.z * n);
     const float offset = hybridStepOffset(i, jitter.z);
     float k = 0.0f;
-    // Ray and Graze: this ray's lift along the normal (grid units), then steps below the offset skipped.
+    // Ray and Graze: this ray's lift along the normal (world units), then steps below the offset skipped.
     const float lift = fromSurface && c.lift == 2 ? c.normalOffset * std::max(0.0f, 1.0f - c.reach * local.z) : 0.0f;
     const glm::vec3 rayOrigin = origin + lift * nGrid;
     int previousK = fromSurface ? kNoStep : voxelOf(origin, c.dims).z;
@@ -123,8 +123,8 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
       if (hit) {
         // The falloff's distance is the hit's from the surface point, not from the lifted origin
         // (the reference's rays start on the surface): grid units over |dir| (1 / voxel size).
-        const float fromSurface = glm::length(rayOrigin + dist * dir - surface) / glm::length(dir);
-        k = hybridFalloff(c.falloff, fromSurface, c.radius);
+        const float hitDistance = glm::length(rayOrigin + dist * dir - surface) / glm::length(dir);
+        k = hybridFalloff(c.falloff, hitDistance, c.radius);
         break;  // the GPU keeps stepping (no branch) but adds only the first hit
       }
       previousK = gk;
