@@ -143,24 +143,27 @@ bool haoAnyInRun(int i, int j, int k0, int k1)
 }
 
 // A ray origin in a set voxel (after the normal offset: a point within a voxel of another surface,
-// in a crease) moves one voxel to the face neighbour that is empty and most along the normal, not
-// behind it. Marching from inside would stop every ray at once (AO near 1 where the reference has
-// about 0.5); the neighbour sees the other surface from outside. No such neighbour: stays.
-vec3 haoLeaveSetVoxel(vec3 origin, vec3 nGrid)
+// in a crease) moves one voxel to the face neighbour that is empty, not behind the surface, and
+// most along nGrid + HAO_VIEWER_PULL vGrid (vGrid toward the viewer: the point is seen, so the
+// neighbour on the eye's side is not behind the other surface; the CPU's leaveSetVoxel says why).
+// No such neighbour: stays.
+#define HAO_VIEWER_PULL 0.5
+vec3 haoLeaveSetVoxel(vec3 origin, vec3 nGrid, vec3 vGrid)
 {
   ivec3 o = haoVoxel(origin);
   if (!haoAnyInRun(o.x, o.y, o.z, o.z)) return origin;
   vec3 best = vec3(0.0);
-  float bestDot = -0.25;
+  float bestScore = -1e30;
   for (int a = 0; a < 6; ++a)
   {
     vec3 d = vec3(0.0);
     d[a >> 1] = (a & 1) == 0 ? 1.0 : -1.0;
     float along = dot(nGrid, d);
+    float score = along + HAO_VIEWER_PULL * dot(vGrid, d);
     ivec3 v = o + ivec3(d);
-    if (along > bestDot && !haoAnyInRun(v.x, v.y, v.z, v.z))
+    if (along > -0.25 && score > bestScore && !haoAnyInRun(v.x, v.y, v.z, v.z))
     {
-      bestDot = along;
+      bestScore = score;
       best = d;
     }
   }
@@ -178,7 +181,7 @@ vec3 haoRayLocal(int i, vec2 jitter)
   return vec3(sinT * cos(phi), sinT * sin(phi), cosT);
 }
 
-float haoOcclusion(vec3 p, vec3 n)
+float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
 {
   uint key = haoJitterKey(p, n);
   uint h2 = haoHash(key), h3 = haoHash(h2);
@@ -188,13 +191,14 @@ float haoOcclusion(vec3 p, vec3 n)
   mat3 m3 = mat3(haoWorldToGrid);
   vec3 surface = (haoWorldToGrid * vec4(p, 1.0)).xyz;
   vec3 lifted = (haoWorldToGrid * vec4(p + haoNormalOffset * n, 1.0)).xyz;
+  vec3 vGrid = normalize(m3 * toViewer);
 #if HAO_LIFT != 0
   // Ray and Graze start on the surface, except in a crease (as the CPU's marchHybridAO).
   ivec3 lv = haoVoxel(lifted);
   bool fromSurface = !haoAnyInRun(lv.x, lv.y, lv.z, lv.z);
-  vec3 origin = fromSurface ? surface : haoLeaveSetVoxel(lifted, normalize(m3 * n));
+  vec3 origin = fromSurface ? surface : haoLeaveSetVoxel(lifted, normalize(m3 * n), vGrid);
 #else
-  vec3 origin = haoLeaveSetVoxel(lifted, normalize(m3 * n));
+  vec3 origin = haoLeaveSetVoxel(lifted, normalize(m3 * n), vGrid);
 #endif
   float stepLength = haoRadius / float(haoSteps);
   int originK = haoVoxel(origin).z;
@@ -259,13 +263,15 @@ void main()
   vec3 pv = aoViewPosition(g);
   vec3 p = (aoViewToWorld * vec4(pv, 1.0)).xyz;
   vec3 n = normalize(mat3(aoViewToWorld) * aoUnpackNormal(packedN));
+  // Toward the eye: the view's origin, or its +z axis under a parallel projection (clip w = 1).
+  vec3 toViewer = normalize(mat3(aoViewToWorld) * (aoClipW.z == 0.0 ? vec3(0.0, 0.0, 1.0) : -pv));
 #if HAO_STATIC
   haoWithStatic = (aoFlags(g) & AO_FLAG_DYNAMIC) != 0;
   bool skip = !haoWithStatic && !haoNearDynamic(p + haoNormalOffset * n);
 #else
   bool skip = false;
 #endif
-  float ao = (haoEmpty != 0 || skip) ? 0.0 : haoOcclusion(p, n);
+  float ao = (haoEmpty != 0 || skip) ? 0.0 : haoOcclusion(p, n, toViewer);
   gl_FragData[0] = vec4(ao, 0.0, 0.0, 1.0);
   gl_FragData[1] = vec4(pv.z, 0.0, 0.0, 1.0);
 }

@@ -35,12 +35,13 @@ bool inAnyZone(const std::vector<Bounds>& zones, const glm::vec3& o) {
 // The static mode's low-resolution march: each texel with the grids its receiver needs.
 AOBuffer marchStaticDynamic(HybridCpuResult& out, const std::vector<GeometryInstance>& all, const SurfaceSamples& full,
                             const SurfaceSamples& low, int k, const HybridSettings& s, const FrameContext& context,
-                            const std::vector<std::uint8_t>& dynamicReceivers) {
+                            const std::vector<std::uint8_t>& dynamicReceivers, const Camera& camera) {
   const VoxelGrid dynamicGrid = voxelizeInstances(pick(all, out.plan.dynamicCasters), out.region.frame, methodFor(s), s.solid);
   VoxelGrid fullGrid = voxelizeInstances(pick(all, out.plan.staticCasters), out.region.frame, methodFor(s), s.solid);
   for (std::size_t w = 0; w < fullGrid.words().size(); ++w) fullGrid.words()[w] |= dynamicGrid.words()[w];
   out.voxels = fullGrid.count();
-  const HybridMarchConstants c = makeHybridMarchConstants(s, context, out.region.frame);
+  HybridMarchConstants c = makeHybridMarchConstants(s, context, out.region.frame);
+  setViewer(c, camera);
   // Two batches over the same texels: dynamic receivers on the full grid, static ones near a
   // dynamic caster on the dynamic grid; the rest stay 0.
   SurfaceSamples dynamicPart = low, staticPart = low;
@@ -100,11 +101,12 @@ HybridCpuResult computeHybridAOCpu(Node& root, const Camera& camera, const Surfa
   const SurfaceSamples low = lowResolutionSamples(gbuffer, k);
   AOBuffer lowAO;
   if (s.staticBake) {
-    lowAO = marchStaticDynamic(out, all, gbuffer, low, k, s, context, dynamicReceivers);
+    lowAO = marchStaticDynamic(out, all, gbuffer, low, k, s, context, dynamicReceivers, camera);
   } else {
     const VoxelGrid grid = voxelizeInstances(pick(all, out.region.casters), out.region.frame, methodFor(s), s.solid);
     out.voxels = grid.count();
-    const HybridMarchConstants c = makeHybridMarchConstants(s, context, out.region.frame);
+    HybridMarchConstants c = makeHybridMarchConstants(s, context, out.region.frame);
+    setViewer(c, camera);
     lowAO = marchHybridAO(grid, c, low);
   }
   const UpsampleSettings& u = s.common.upsample;

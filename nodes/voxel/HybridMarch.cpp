@@ -62,21 +62,28 @@ glm::ivec3 voxelOf(const glm::vec3& g, const glm::ivec3& dims) {
   return glm::ivec3(glm::floor(glm::clamp(g, lo, hi)));
 }
 // A ray origin in a set voxel (after the normal offset: a point within a voxel of another surface,
-// in a crease) moves one voxel to the face neighbour that is empty and most along the normal, not
-// behind it. Marching from inside would stop every ray at once (AO near 1 where the reference has
-// about 0.5); the neighbour sees the other surface from outside. No such neighbour: stays.
-glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const glm::vec3& nGrid, const glm::ivec3& dims) {
+// in a crease) moves one voxel to the face neighbour that is empty, not behind the surface
+// (n_g . e > -0.25), and most along n_g + kViewerPull v_g (v_g toward the viewer). Marching from
+// inside would stop every ray at once (AO near 1 where the reference has about 0.5); the neighbour
+// sees the other surface from outside. The viewer's side decides between neighbours the normal
+// cannot tell apart (beside a wall, both sides are along 0): the point is seen, so the other
+// surface is not between it and the eye, while the neighbour behind a single-sided sheet is on its
+// far side (a box's inside corner read through the wall: 0.65 for 0.93). No such neighbour: stays.
+constexpr float kViewerPull = 0.5f;
+glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const glm::vec3& nGrid, const glm::vec3& vGrid,
+                        const glm::ivec3& dims) {
   const glm::ivec3 o = voxelOf(origin, dims);
   if (!grid.anyInRun(o.x, o.y, o.z, o.z)) return origin;
   glm::vec3 best(0.0f);
-  float bestDot = -0.25f;
+  float bestScore = -1e30f;
   for (int a = 0; a < 6; ++a) {
     glm::vec3 d(0.0f);
     d[a >> 1] = (a & 1) == 0 ? 1.0f : -1.0f;
     const float along = glm::dot(nGrid, d);
+    const float score = along + kViewerPull * glm::dot(vGrid, d);
     const glm::ivec3 v = o + glm::ivec3(d);
-    if (along > bestDot && !grid.anyInRun(v.x, v.y, v.z, v.z)) {
-      bestDot = along;
+    if (along > -0.25f && score > bestScore && !grid.anyInRun(v.x, v.y, v.z, v.z)) {
+      bestScore = score;
       best = d;
     }
   }
@@ -85,6 +92,22 @@ glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const gl
 constexpr int kNoStep = -1000000;  // RayLift::Ray, Graze: no step tested yet
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
+
+glm::vec3 towardViewer(const HybridMarchConstants& c, const glm::vec3& p) {
+  if (!c.viewerKnown) return glm::vec3(0.0f);
+  if (c.viewerParallel) return c.towardEye;
+  const glm::vec3 d = c.eye - p;
+  const float len = glm::length(d);
+  return len > 0.0f ? d / len : glm::vec3(0.0f);
+}
+
+void setViewer(HybridMarchConstants& c, const Camera& camera) {
+  c.viewerKnown = true;
+  c.viewerParallel = camera.parallel;
+  c.eye = glm::vec3(camera.position);
+  const glm::dvec3 back = camera.position - camera.focalPoint;
+  c.towardEye = glm::length(back) > 0.0 ? glm::vec3(glm::normalize(back)) : glm::vec3(0.0f, 0.0f, 1.0f);
+}
 
 float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const glm::vec3& p, const glm::vec3& n) {
   if (!finite(p) || !finite(n)) return 0.0f;
@@ -100,7 +123,10 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
   // Ray and Graze start on the surface, except in a crease (the lifted point's voxel set: another
   // surface within the offset, which their skipped steps would miss): there as Normal.
   const bool fromSurface = c.lift != 0 && !grid.anyInRun(liftedVoxel.x, liftedVoxel.y, liftedVoxel.z, liftedVoxel.z);
-  const glm::vec3 origin = fromSurface ? surface : leaveSetVoxel(grid, lifted, glm::normalize(nGrid), c.dims);
+  const glm::vec3 toViewer = towardViewer(c, p);
+  const glm::vec3 vGrid = c.viewerKnown ? glm::normalize(m3 * toViewer) : glm::vec3(0.0f);
+  const glm::vec3 origin =
+      fromSurface ? surface : leaveSetVoxel(grid, lifted, glm::normalize(nGrid), vGrid, c.dims);
   const float stepLength = c.radius / static_cast<float>(c.steps);
   float sum = 0.0f, weights = 0.0f;
   for (int i = 0; i < c.rays; ++i) {

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "core/AOScene.h"
+#include "core/Camera.h"
 #include "reference/SurfaceSamples.h"
 #include "render/FrameContext.h"
 #include "voxel/HybridSettings.h"
@@ -38,6 +39,12 @@ struct HybridMarchConstants {
   std::uint32_t jitterSeed = 0;
   glm::mat4 worldToGrid{1.0f};
   glm::ivec3 dims{1};
+  // The camera, for a crease's way out (leaveSetVoxel): the shader has it from the G-buffer.
+  // viewerKnown false (constants made without a camera): ties between neighbours go by axis order.
+  bool viewerKnown = false;
+  bool viewerParallel = false;
+  glm::vec3 eye{0.0f};            // perspective: world position of the eye
+  glm::vec3 towardEye{0.0f};      // parallel: unit world direction toward the viewer
 
   std::string defines() const;
 };
@@ -50,6 +57,10 @@ int marchSteps(const HybridSettings& s, double radius, double voxelSize);
 // std::invalid_argument on bad settings or a radius that is not positive.
 HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const FrameContext& context,
                                               const VoxelFrame& frame);
+
+// The camera's side of the surface point p (unit world vector; 0 without viewerKnown).
+glm::vec3 towardViewer(const HybridMarchConstants& c, const glm::vec3& p);
+void setViewer(HybridMarchConstants& c, const Camera& camera);
 
 // A(p, n) of one surface point (n unit length), in [0, 1].
 float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const glm::vec3& p, const glm::vec3& n);
