@@ -21,21 +21,27 @@ using namespace aokit;
 
 namespace {
 
-// Binary-falloff occlusion of a point on one plane at distance d from a perpendicular plane that
-// rises across its whole hemisphere side: (1/pi) * integral of cos over the directions that reach
-// the other plane within R.
-double creaseAO(double d, double R) {
+// (1/pi) * integral of cos over the hemisphere (z up) of the directions `occluded(cos t, towards)`
+// holds for, towards = the direction's component along +x (numerical quadrature, no voxels).
+template <class Occluded>
+double hemisphereAO(Occluded occluded) {
   const int nt = 600, np = 1200;
   const double pi = 3.14159265358979323846, dt = 0.5 * pi / nt, dp = 2.0 * pi / np;
   double sum = 0.0;
   for (int i = 0; i < nt; ++i) {
     const double t = (i + 0.5) * dt;
     for (int j = 0; j < np; ++j) {
-      const double towards = std::sin(t) * std::cos((j + 0.5) * dp);  // component towards the other plane
-      if (towards > 0.0 && d <= R * towards) sum += std::cos(t) * std::sin(t) * dt * dp;
+      const double towards = std::sin(t) * std::cos((j + 0.5) * dp);
+      if (occluded(std::cos(t), towards)) sum += std::cos(t) * std::sin(t) * dt * dp;
     }
   }
   return sum / pi;
+}
+
+// Binary-falloff occlusion of a point on one plane at distance d from a perpendicular plane that
+// rises across its whole hemisphere side: the directions that reach the other plane within R.
+double creaseAO(double d, double R) {
+  return hemisphereAO([&](double, double towards) { return towards > 0.0 && d <= R * towards; });
 }
 
 }  // namespace
@@ -80,18 +86,10 @@ namespace {
 // that roofs the wall's side of the point (a tunnel; open far away): a ray is occluded when the
 // first of wall and ceiling is within R.
 double tunnelAO(double d, double c, double R) {
-  const int nt = 600, np = 1200;
-  const double pi = 3.14159265358979323846, dt = 0.5 * pi / nt, dp = 2.0 * pi / np;
-  double sum = 0.0;
-  for (int i = 0; i < nt; ++i) {
-    const double t = (i + 0.5) * dt;
-    for (int j = 0; j < np; ++j) {
-      const double towards = std::sin(t) * std::cos((j + 0.5) * dp);
-      const double toWall = towards > 0.0 ? d / towards : 1e30, toCeiling = c / std::cos(t);
-      if (std::min(toWall, toCeiling) <= R) sum += std::cos(t) * std::sin(t) * dt * dp;
-    }
-  }
-  return sum / pi;
+  return hemisphereAO([&](double cosT, double towards) {
+    const double toWall = towards > 0.0 ? d / towards : 1e30, toCeiling = c / cosT;
+    return std::min(toWall, toCeiling) <= R;
+  });
 }
 
 }  // namespace
