@@ -6,7 +6,8 @@
 // nodes/voxel/README.md): object-space jitter keyed by the world position's cell and the quantized
 // normal, HAO_RAYS rays of a uniform cone pattern around the normal, haoSteps steps over R with a
 // per-ray offset, each step testing the voxels between it and the previous step in its column
-// (HAO_SPAN_TEST) or its own voxel; the first hit weighs k(d) of the falloff; A = sum k cos /
+// (HAO_SPAN_TEST 1), the previous step's segment through the columns it crosses (2), or its own
+// voxel; the first hit weighs k(d) of the falloff; A = sum k cos /
 // sum cos. Integer parts (hash, key, voxel addresses) are bit-exact with the CPU's.
 // Out 0: occlusion in .r. Out 1: the view z of the texel's pixel (+1 on background).
 // Rays haoFirstRay..haoRayEnd - 1 only: llvmpipe ends an invocation's loops after 65535 iterations
@@ -19,7 +20,6 @@
 // dynamic receiver marches both grids, ORed word for word.
 //AOKIT::Defines
 //AOKIT::DeferredCommon
-#define HAO_NO_STEP -1000000  // HAO_LIFT 1, 2: no step tested yet
 uniform usampler2D haoGrid;   // R32UI, 4 nx x (ny slabs): texel (4 i + c, s ny + j)
 uniform int haoDimsV[3];     // grid dimensions (vtkShaderProgram sets no ivec3)
 #define haoDims ivec3(haoDimsV[0], haoDimsV[1], haoDimsV[2])
@@ -142,6 +142,26 @@ bool haoAnyInRun(int i, int j, int k0, int k1)
   return false;
 }
 
+// The segment test of one step (HAO_SPAN_TEST 2; the CPU's stepHits says why): the voxels of
+// segment a -> b (grid units, clamped as haoVoxel) in each column it passes, a's, the one between
+// where it crosses both an x and a y boundary, b's, each over the part of its depth in that column.
+bool haoZRun(int i, int j, float za, float zb)
+{
+  return haoAnyInRun(i, j, int(floor(min(za, zb))), int(floor(max(za, zb))));
+}
+bool haoStepHits(vec3 a, vec3 b)
+{
+  ivec2 ca = ivec2(floor(a.xy)), cb = ivec2(floor(b.xy));
+  float tx = ca.x != cb.x ? (float(max(ca.x, cb.x)) - a.x) / (b.x - a.x) : 1.0;
+  float ty = ca.y != cb.y ? (float(max(ca.y, cb.y)) - a.y) / (b.y - a.y) : 1.0;
+  float t1 = min(tx, ty), t2 = max(tx, ty);
+  float z1 = a.z + t1 * (b.z - a.z), z2 = a.z + t2 * (b.z - a.z);
+  if (haoZRun(ca.x, ca.y, a.z, z1)) return true;
+  if (!(t1 < 1.0)) return false;
+  if (t2 < 1.0 && haoZRun(tx < ty ? cb.x : ca.x, tx < ty ? ca.y : cb.y, z1, z2)) return true;
+  return haoZRun(cb.x, cb.y, t2 < 1.0 ? z2 : z1, b.z);
+}
+
 // A ray origin in a set voxel (after the normal offset: a point within a voxel of another surface,
 // in a crease) moves one voxel to the face neighbour that is empty, not behind the surface, and
 // most along nGrid + HAO_VIEWER_PULL vGrid (vGrid toward the viewer: the point is seen, so the
@@ -201,7 +221,7 @@ float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
   vec3 origin = haoLeaveSetVoxel(lifted, normalize(m3 * n), vGrid);
 #endif
   float stepLength = haoRadius / float(haoSteps);
-  int originK = haoVoxel(origin).z;
+  vec3 lo = vec3(-1.0), hi = vec3(haoDims);  // as haoVoxel: outside stays outside
   float sum = 0.0, weights = 0.0;
   for (int i = haoFirstRay; i < haoRayEnd; ++i)
   {
@@ -213,23 +233,29 @@ float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
     // Ray and Graze: this ray's lift along the normal, then steps below the offset skipped.
     float lift = fromSurface && HAO_LIFT == 2 ? haoNormalOffset * max(0.0, 1.0 - haoReach * local.z) : 0.0;
     vec3 rayOrigin = origin + lift * (m3 * n);
-    int previousK = fromSurface ? HAO_NO_STEP : originK;
+    bool started = !fromSurface;  // the first step tested spans its own voxel only
 #else
     vec3 rayOrigin = origin;
-    int previousK = originK;
+    bool started = true;
 #endif
+    vec3 previous = clamp(origin, lo, hi);
     for (int j = 0; j < haoSteps; ++j)
     {
       float dist = (float(j) + offset) * stepLength;
 #if HAO_LIFT != 0
       if (fromSurface && lift + dist * local.z < haoNormalOffset) continue;  // within the surface's own voxels
 #endif
-      ivec3 g = haoVoxel(rayOrigin + dist * dir);
-      if (previousK == HAO_NO_STEP) previousK = g.z;  // the first step tested spans its own voxel
-#if HAO_SPAN_TEST
-      bool hit = haoAnyInRun(g.x, g.y, min(previousK, g.z), max(previousK, g.z));
+      vec3 g = clamp(rayOrigin + dist * dir, lo, hi);
+      if (!started) previous = g;
+      started = true;
+      ivec3 v = ivec3(floor(g));
+#if HAO_SPAN_TEST == 2
+      bool hit = haoStepHits(previous, g);
+#elif HAO_SPAN_TEST
+      int previousK = int(floor(previous.z));
+      bool hit = haoAnyInRun(v.x, v.y, min(previousK, v.z), max(previousK, v.z));
 #else
-      bool hit = haoAnyInRun(g.x, g.y, g.z, g.z);
+      bool hit = haoAnyInRun(v.x, v.y, v.z, v.z);
 #endif
       if (hit)
       {
@@ -237,7 +263,7 @@ float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
         k = haoFalloff(length(rayOrigin + dist * dir - surface) / length(dir));
         break;
       }
-      previousK = g.z;
+      previous = g;
     }
     sum += k * local.z;
     weights += local.z;

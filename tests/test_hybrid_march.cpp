@@ -1,5 +1,6 @@
 // The CPU Hybrid AO march against a closed form (a receiver under an infinite ceiling), and its
-// GPU-mirroring behaviour: span tests versus point tests on a thin sheet, the grid's outside,
+// GPU-mirroring behaviour: span tests versus point tests on a thin sheet, span tests through the
+// columns a step crosses (a diagonal sheet), the grid's outside,
 // thread independence, uncovered and bad pixels.
 #include <gtest/gtest.h>
 
@@ -154,6 +155,49 @@ TEST(HybridMarch, StrideRaisesStepsWithinTheSettingAnd256) {
   EXPECT_EQ(marchSteps(s, 1.0, 0.01), 40);   // 100 voxels over R, 2.5 a step
   EXPECT_EQ(marchSteps(s, 1.0, 0.0099), 41); // rounded up
   EXPECT_EQ(marchSteps(s, 1.0, 1e-6), 256);  // never more than the setting's range
+}
+
+// A sheet one voxel thick across x and y (dominant-axis voxels, its normal 42 degrees from x) in
+// front of the receivers, stepped at most one voxel at a time: a step that moves to the diagonal
+// column passes between two of the sheet's voxels touching only at an edge, and the span test,
+// which looks in the step's end column only, misses it; the segment test (`segment=1`) follows
+// each step through every column it crosses.
+TEST(HybridMarch, SpanTestsFollowStepsAcrossColumnsThroughADiagonalSheet) {
+  const double H = 0.5, R = 1.0, degrees = 42.0;
+  const double a = degrees * 3.14159265358979323846 / 180.0;
+  const glm::dvec3 normal(std::cos(a), std::sin(a), 0.0);
+  const glm::dvec3 tangent(-normal.y, normal.x, 0.0);
+  Scene scene;
+  addPlaced(*scene.root, makeBox({0.004, 6.0, 6.0}), translation(H * normal) * rotation(degrees, {0.0, 0.0, 1.0}),
+            glm::vec3(1.0f));
+  Bounds region;
+  region.extend(glm::dvec3(-1.5));
+  region.extend(glm::dvec3(1.5));
+  const VoxelFrame frame = VoxelFrame::fitting(region, 256);
+  const VoxelGrid grid = voxelizeInstances(collectInstances(*scene.root), frame, VoxelizeMethod::DominantCentre, false);
+  HybridSettings s = settings(64, 8, true);
+  s.stride = 1.0;  // at most one voxel a step, as the defaults
+  auto mean = [&](bool segment) {
+    s.segmentTest = segment;
+    const HybridMarchConstants c = makeHybridMarchConstants(s, FrameContext{R, Falloff::Binary}, frame);
+    EXPECT_GE(c.steps, R / frame.voxelSize);
+    double sum = 0.0;
+    for (int i = 0; i < 64; ++i) {
+      const glm::dvec3 p = (0.013 * i - 0.4) * tangent + glm::dvec3(0.0, 0.0, 0.007 * i);
+      sum += marchHybridAO(grid, c, glm::vec3(p), glm::vec3(normal));
+    }
+    return sum / 64;
+  };
+  const double span = mean(false), segment = mean(true), voxel = frame.voxelSize;
+  // As under the ceiling: the sheet's voxels reach up to a voxel toward the receiver, and the
+  // origin is lifted by the offset.
+  const double lo = ceilingAO(Falloff::Binary, H - s.normalOffset * voxel, R) - 0.02;
+  const double hi = ceilingAO(Falloff::Binary, H - (s.normalOffset + 1.0) * voxel, R) + 0.02;
+  std::printf("diagonal sheet %.1f voxels away, closed form %.4f (bounds %.4f..%.4f): span test %.4f, segment test %.4f\n",
+              H / voxel, ceilingAO(Falloff::Binary, H, R), lo, hi, span, segment);
+  EXPECT_GT(segment, lo);
+  EXPECT_LT(segment, hi);
+  EXPECT_LT(span, lo);  // the failure mode the segment test removes (measured 0.684)
 }
 
 // A floor under a low ceiling (about four voxels up): the normal lift sees the ceiling from a voxel

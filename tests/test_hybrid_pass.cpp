@@ -64,7 +64,7 @@ TEST(HybridPass, MatchesTheCpuOracleOnItsOwnGBuffer) {
                         {"behind", ""},           {"sphere-plane", "scale=0.25,window=32"}, {"sphere-plane", "scale=0.25,window=1"}, {"sphere-plane", "scale=0.25,window=8"}, {"sphere-plane", "window=8"},
                         {"cubes", "frame=dominant,falloff=wendland,spread=0.7"},
                         {"room", "frame=rotated,span=0,solid=0,window=1"},
-                        {"cubes", "lift=ray"},  {"hidden", "lift=graze,reach=2"},  // rays from the surface, creases as normal
+                        {"cubes", "lift=ray"},  {"isosurface", "segment=1"},  {"hidden", "segment=1,lift=ray"},  {"hidden", "lift=graze,reach=2"},  // rays from the surface, creases as normal
                         {"hidden", "rays=256,steps=128,res=512,scale=0.25,window=32"}};  // two march passes
   std::printf("GPU against CPU oracle on the pass's own G-buffer: grid voxels differing / set; AO |diff| mean, "
               "p99, max, share > 0.05\n");

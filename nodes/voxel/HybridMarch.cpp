@@ -15,7 +15,7 @@ std::string HybridMarchConstants::defines() const {
   std::ostringstream d;
   d << "#define HAO_RAYS " << rays << "\n"
     << "#define HAO_FALLOFF " << static_cast<int>(falloff) << "\n"
-    << "#define HAO_SPAN_TEST " << int(spanTest) << "\n"
+    << "#define HAO_SPAN_TEST " << (spanTest ? (segmentTest ? 2 : 1) : 0) << "\n"
     << "#define HAO_LIFT " << lift << "\n"
     << "#define HAO_STATIC " << int(staticDynamic) << "\n"
     << "#define HAO_MAX_ZONES " << kMaxDynamicZones << "\n";
@@ -41,6 +41,7 @@ HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const Fra
   c.steps = marchSteps(s, R, frame.voxelSize);
   c.falloff = context.falloff;
   c.spanTest = s.spanTest;
+  c.segmentTest = s.segmentTest;
   c.lift = static_cast<int>(s.lift);
   c.radius = static_cast<float>(R);
   c.cosMax = static_cast<float>(std::max(0.0, std::cos(s.spread * 1.5707963267948966)));
@@ -89,7 +90,28 @@ glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const gl
   }
   return origin + best;
 }
-constexpr int kNoStep = -1000000;  // RayLift::Ray, Graze: no step tested yet
+// The segment test of one step: the voxels of the segment a -> b (grid units, clamped as voxelOf)
+// in each column it passes, a's, the one between where it crosses both an x and a y boundary, b's,
+// each over the part of its depth in that column. The span test looks in b's column alone over the
+// whole depth: a step to the diagonal column passes between two voxels of a sheet touching only at
+// an edge (a dominant-axis sheet is one voxel per column), and a's column above a.z goes unseen.
+// Exact where a step spans at most one voxel per axis (stride <= 1), longer steps test these
+// columns only.
+bool stepHits(const VoxelGrid& grid, const glm::vec3& a, const glm::vec3& b) {
+  const glm::ivec2 ca(glm::floor(glm::vec2(a))), cb(glm::floor(glm::vec2(b)));
+  const float tx = ca.x != cb.x ? (static_cast<float>(std::max(ca.x, cb.x)) - a.x) / (b.x - a.x) : 1.0f;
+  const float ty = ca.y != cb.y ? (static_cast<float>(std::max(ca.y, cb.y)) - a.y) / (b.y - a.y) : 1.0f;
+  const float t1 = std::min(tx, ty), t2 = std::max(tx, ty);
+  const float z1 = a.z + t1 * (b.z - a.z), z2 = a.z + t2 * (b.z - a.z);
+  const auto run = [&](int i, int j, float za, float zb) {
+    return grid.anyInRun(i, j, static_cast<int>(std::floor(std::min(za, zb))),
+                         static_cast<int>(std::floor(std::max(za, zb))));
+  };
+  if (run(ca.x, ca.y, a.z, z1)) return true;
+  if (!(t1 < 1.0f)) return false;
+  if (t2 < 1.0f && run(tx < ty ? cb.x : ca.x, tx < ty ? ca.y : cb.y, z1, z2)) return true;
+  return run(cb.x, cb.y, t2 < 1.0f ? z2 : z1, b.z);
+}
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
@@ -128,6 +150,7 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
   const glm::vec3 origin =
       fromSurface ? surface : leaveSetVoxel(grid, lifted, glm::normalize(nGrid), vGrid, c.dims);
   const float stepLength = c.radius / static_cast<float>(c.steps);
+  const glm::vec3 lo(-1.0f), hi(c.dims);  // as voxelOf: outside stays outside
   float sum = 0.0f, weights = 0.0f;
   for (int i = 0; i < c.rays; ++i) {
     const glm::vec3 local = hybridRayLocal(i, c.rays, c.cosMax, glm::vec2(jitter.x, jitter.y));
@@ -137,15 +160,20 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
     // Ray and Graze: this ray's lift along the normal (world units), then steps below the offset skipped.
     const float lift = fromSurface && c.lift == 2 ? c.normalOffset * std::max(0.0f, 1.0f - c.reach * local.z) : 0.0f;
     const glm::vec3 rayOrigin = origin + lift * nGrid;
-    int previousK = fromSurface ? kNoStep : voxelOf(origin, c.dims).z;
+    // Ray and Graze: no step tested yet, and the first one tested spans its own voxel only.
+    bool started = !fromSurface;
+    glm::vec3 previous = glm::clamp(origin, lo, hi);
     for (int j = 0; j < c.steps; ++j) {
       const float dist = (static_cast<float>(j) + offset) * stepLength;
       if (fromSurface && lift + dist * local.z < c.normalOffset) continue;  // within the surface's own voxels
-      const glm::ivec3 v = voxelOf(rayOrigin + dist * dir, c.dims);
-      const int gk = v.z;
-      if (previousK == kNoStep) previousK = gk;  // the first step tested spans its own voxel
-      const bool hit = c.spanTest ? grid.anyInRun(v.x, v.y, std::min(previousK, gk), std::max(previousK, gk))
-                                  : grid.get(v.x, v.y, gk);
+      const glm::vec3 g = glm::clamp(rayOrigin + dist * dir, lo, hi);
+      if (!started) previous = g;
+      started = true;
+      const glm::ivec3 v(glm::floor(g));
+      const int previousK = static_cast<int>(std::floor(previous.z));
+      const bool hit = !c.spanTest     ? grid.get(v.x, v.y, v.z)
+                       : c.segmentTest ? stepHits(grid, previous, g)
+                                       : grid.anyInRun(v.x, v.y, std::min(previousK, v.z), std::max(previousK, v.z));
       if (hit) {
         // The falloff's distance is the hit's from the surface point, not from the lifted origin
         // (the reference's rays start on the surface): grid units over |dir| (1 / voxel size).
@@ -153,7 +181,7 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
         k = hybridFalloff(c.falloff, hitDistance, c.radius);
         break;  // the GPU keeps stepping (no branch) but adds only the first hit
       }
-      previousK = gk;
+      previous = g;
     }
     sum += k * local.z;
     weights += local.z;

@@ -4,7 +4,9 @@
 // formulas). Step j of a ray reaches g_j = M (origin + t_j dir) (M the float world-to-grid
 // matrix, g_-1 = M origin; each g clamped to [-1, dims] before floor, so the int conversion is
 // defined) and tests column (floor g_j.x, floor g_j.y): with the span test every voxel k in
-// [min, max] of (floor g_{j-1}.z, floor g_j.z), clamped to the grid, else only k = floor g_j.z.
+// [min, max] of (floor g_{j-1}.z, floor g_j.z), clamped to the grid, else only k = floor g_j.z;
+// with the segment test the segment g_{j-1} -> g_j in each column it crosses, over its own depth
+// there (README.md, March).
 // Outside the grid reads as empty. An origin in a set voxel (a crease) first steps to an empty face
 // neighbour along the normal (README.md, March). A non-finite point or normal gives 0.
 #include <cstdint>
@@ -28,7 +30,8 @@ struct HybridMarchConstants {
   int rays = 0;                       // #define HAO_RAYS
   int steps = 0;                      // uniform haoSteps (marchSteps: the grid can raise it)
   Falloff falloff = Falloff::Binary;  // #define HAO_FALLOFF (0 binary, 1 wendland, 2 sqrt, 3 exponential)
-  bool spanTest = true;               // #define HAO_SPAN_TEST
+  bool spanTest = true;               // #define HAO_SPAN_TEST 1
+  bool segmentTest = false;           // with spanTest: #define HAO_SPAN_TEST 2
   int lift = 0;                       // #define HAO_LIFT (RayLift: 0 normal, 1 ray, 2 graze)
   bool staticDynamic = false;         // #define HAO_STATIC (GPU: a second, static grid; StaticDynamic.h)
   float radius = 1.0f;                // world units
