@@ -28,6 +28,17 @@ int marchSteps(const HybridSettings& s, double radius, double voxelSize) {
   return static_cast<int>(std::clamp(needed, static_cast<double>(s.steps), 256.0));
 }
 
+HybridMarchConstants hybridMarchShape(const HybridSettings& s, Falloff falloff) {
+  HybridMarchConstants c;
+  c.rays = s.rays;
+  c.falloff = falloff;
+  c.spanTest = s.spanTest;
+  c.segmentTest = s.segmentTest;
+  c.lift = static_cast<int>(s.lift);
+  c.staticDynamic = s.staticBake;
+  return c;
+}
+
 HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const FrameContext& context,
                                               const VoxelFrame& frame) {
   validate(s);
@@ -36,13 +47,8 @@ HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const Fra
     throw std::invalid_argument("hybrid: radius must be positive: set it or give the scene an AO radius");
   if (!(frame.voxelSize > 0.0) || !std::isfinite(frame.voxelSize))
     throw std::invalid_argument("hybrid: the voxel frame has no positive voxel size");
-  HybridMarchConstants c;
-  c.rays = s.rays;
+  HybridMarchConstants c = hybridMarchShape(s, context.falloff);
   c.steps = marchSteps(s, R, frame.voxelSize);
-  c.falloff = context.falloff;
-  c.spanTest = s.spanTest;
-  c.segmentTest = s.segmentTest;
-  c.lift = static_cast<int>(s.lift);
   c.radius = static_cast<float>(R);
   c.cosMax = static_cast<float>(std::max(0.0, std::cos(s.spread * 1.5707963267948966)));
   if (s.spread >= 1.0) c.cosMax = 0.0f;

@@ -55,6 +55,10 @@ struct HybridMarchConstants {
 // Steps per ray: the setting's, or more where one step would cross more than `stride` voxels.
 int marchSteps(const HybridSettings& s, double radius, double voxelSize);
 
+// The fields that are #defines (the shader's shape), from the settings alone: the pass compiles
+// its shader from them before the frame's grid exists.
+HybridMarchConstants hybridMarchShape(const HybridSettings& s, Falloff falloff);
+
 // Validates the settings, then resolves them against the frame's context (radius, falloff:
 // render/FrameContext.h) and the grid's frame (offset and jitter cell are in voxels). Throws
 // std::invalid_argument on bad settings or a radius that is not positive.

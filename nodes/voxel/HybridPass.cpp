@@ -41,14 +41,7 @@ void HybridPass::SetSettings(const HybridSettings& s) {
 }
 
 std::string HybridPass::MarchDefines(const FrameContext& context) const {
-  HybridMarchConstants c;
-  c.rays = Settings.rays;
-  c.falloff = context.falloff;
-  c.spanTest = Settings.spanTest;
-  c.segmentTest = Settings.segmentTest;
-  c.lift = static_cast<int>(Settings.lift);
-  c.staticDynamic = Settings.staticBake;
-  return c.defines();
+  return hybridMarchShape(Settings, context.falloff).defines();
 }
 
 void HybridPass::Plan(const FrameContext& context, DeferredPlan& plan) {
