@@ -142,24 +142,30 @@ bool haoAnyInRun(int i, int j, int k0, int k1)
   return false;
 }
 
-// The segment test of one step (HAO_SPAN_TEST 2; the CPU's stepHits says why): the voxels of
+// The segment test (HAO_SPAN_TEST 2; the CPU's SegmentWalk says why): the voxels of each step's
 // segment a -> b (grid units, clamped as haoVoxel) in each column it passes, a's, the one between
-// where it crosses both an x and a y boundary, b's, each over the part of its depth in that column.
+// where it crosses both an x and a y boundary, b's, each over the part of its depth in that column;
+// the part in b's column is tested with the next step's (entry: z where the segment entered its
+// current column; pending: a part from entry on is untested), the last step's after the loop; a hit
+// counts at the distance where its run ends (a at da, b at db; sets hitDist).
 bool haoZRun(int i, int j, float za, float zb)
 {
   return haoAnyInRun(i, j, int(floor(min(za, zb))), int(floor(max(za, zb))));
 }
-bool haoStepHits(vec3 a, vec3 b)
+bool haoStepHits(vec3 a, vec3 b, float da, float db, inout float entry, inout bool pending, out float hitDist)
 {
   ivec2 ca = ivec2(floor(a.xy)), cb = ivec2(floor(b.xy));
   float tx = ca.x != cb.x ? (float(max(ca.x, cb.x)) - a.x) / (b.x - a.x) : 1.0;
   float ty = ca.y != cb.y ? (float(max(ca.y, cb.y)) - a.y) / (b.y - a.y) : 1.0;
   float t1 = min(tx, ty), t2 = max(tx, ty);
   float z1 = a.z + t1 * (b.z - a.z), z2 = a.z + t2 * (b.z - a.z);
-  if (haoZRun(ca.x, ca.y, a.z, z1)) return true;
-  if (!(t1 < 1.0)) return false;
+  hitDist = da + t1 * (db - da);
+  if (haoZRun(ca.x, ca.y, entry, z1)) return true;
+  hitDist = da + t2 * (db - da);
   if (t2 < 1.0 && haoZRun(tx < ty ? cb.x : ca.x, tx < ty ? ca.y : cb.y, z1, z2)) return true;
-  return haoZRun(cb.x, cb.y, t2 < 1.0 ? z2 : z1, b.z);
+  entry = t2 < 1.0 ? z2 : z1;
+  pending = t1 < 1.0;
+  return false;
 }
 
 // A ray origin in a set voxel (after the normal offset: a point within a voxel of another surface,
@@ -239,32 +245,49 @@ float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
     bool started = true;
 #endif
     vec3 previous = clamp(origin, lo, hi);
-    for (int j = 0; j < haoSteps; ++j)
+    float entry = previous.z;
+    bool pending = false;
+    float lastDist = 0.0, hitDist = 0.0;
+    bool hit = false;
+    for (int j = 0; j < haoSteps && !hit; ++j)
     {
       float dist = (float(j) + offset) * stepLength;
 #if HAO_LIFT != 0
       if (fromSurface && lift + dist * local.z < haoNormalOffset) continue;  // within the surface's own voxels
 #endif
       vec3 g = clamp(rayOrigin + dist * dir, lo, hi);
-      if (!started) previous = g;
+      if (!started)
+      {
+        previous = g;
+        lastDist = dist;
+        entry = g.z;
+        pending = false;
+      }
       started = true;
       ivec3 v = ivec3(floor(g));
 #if HAO_SPAN_TEST == 2
-      bool hit = haoStepHits(previous, g);
+      hit = haoStepHits(previous, g, lastDist, dist, entry, pending, hitDist);
 #elif HAO_SPAN_TEST
       int previousK = int(floor(previous.z));
-      bool hit = haoAnyInRun(v.x, v.y, min(previousK, v.z), max(previousK, v.z));
+      hit = haoAnyInRun(v.x, v.y, min(previousK, v.z), max(previousK, v.z));
 #else
-      bool hit = haoAnyInRun(v.x, v.y, v.z, v.z);
+      hit = haoAnyInRun(v.x, v.y, v.z, v.z);
 #endif
-      if (hit)
-      {
-        // The falloff's distance from the surface point, not from the lifted origin (as the CPU).
-        k = haoFalloff(length(rayOrigin + dist * dir - surface) / length(dir));
-        break;
-      }
+#if HAO_SPAN_TEST != 2
+      hitDist = dist;
+#endif
+      lastDist = dist;
       previous = g;
     }
+#if HAO_SPAN_TEST == 2
+    if (!hit && pending)
+    {
+      hit = haoZRun(int(floor(previous.x)), int(floor(previous.y)), entry, previous.z);
+      hitDist = lastDist;
+    }
+#endif
+    // The falloff's distance from the surface point, not from the lifted origin (as the CPU).
+    if (hit) k = haoFalloff(length(rayOrigin + hitDist * dir - surface) / length(dir));
     sum += k * local.z;
     weights += local.z;
   }

@@ -206,6 +206,13 @@ TEST(HybridPass, RaysPerMarchPassStayWithinTheLoopBudget) {
   EXPECT_LE(n * (2 + 256 * 3) + 2 * 256, 65535);
   c.steps = 1;  // one step of 150 voxels: up to 8 words of the column
   EXPECT_LE(raysPerMarchPass(c, true) * (2 + 1 * (1 + 8)) + 512, 65535);
+  // The segment test: each step's first run reaches back into the previous step, a second run
+  // between columns, one more after the last step; a run over the whole 256 deep column: 9 words.
+  c.segmentTest = true;
+  c.steps = 256;  // steps of 0.6 voxels: first run 1.2 voxels, up to 2 words; the others up to 2
+  EXPECT_LE(raysPerMarchPass(c, true) * (2 + 256 * (1 + 2 + 2) + 2) + 512, 65535);
+  c.steps = 1;  // the first run over 300 voxels, capped at the column
+  EXPECT_LE(raysPerMarchPass(c, true) * (2 + 1 * (1 + 9 + 9) + 9) + 512, 65535);
   EXPECT_EQ(raysPerMarchPass(c, false), 256);
 }
 

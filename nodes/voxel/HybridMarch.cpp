@@ -96,28 +96,51 @@ glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const gl
   }
   return origin + best;
 }
-// The segment test of one step: the voxels of the segment a -> b (grid units, clamped as voxelOf)
-// in each column it passes, a's, the one between where it crosses both an x and a y boundary, b's,
+// The segment test: the voxels of each step's segment a -> b (grid units, clamped as voxelOf) in
+// each column it passes, a's, the one between where it crosses both an x and a y boundary, b's,
 // each over the part of its depth in that column. The span test looks in b's column alone over the
 // whole depth: a step to the diagonal column passes between two voxels of a sheet touching only at
 // an edge (a dominant-axis sheet is one voxel per column), and a's column above a.z goes unseen.
-// Exact where a step spans at most one voxel per axis (stride <= 1), longer steps test these
+// The part in b's column is tested with the next step's run of that column (one fetch a step, a
+// second only where it crosses both boundaries), the last step's after the loop. A hit counts at
+// the distance where its run ends (the ray leaves the column, or the step ends): past the set
+// voxel, as the span test's end of the step, which offsets the voxels' fattening of surfaces.
+// Exact where a step spans at most one voxel per axis (stride <= 1); longer steps test these
 // columns only.
-bool stepHits(const VoxelGrid& grid, const glm::vec3& a, const glm::vec3& b) {
-  const glm::ivec2 ca(glm::floor(glm::vec2(a))), cb(glm::floor(glm::vec2(b)));
-  const float tx = ca.x != cb.x ? (static_cast<float>(std::max(ca.x, cb.x)) - a.x) / (b.x - a.x) : 1.0f;
-  const float ty = ca.y != cb.y ? (static_cast<float>(std::max(ca.y, cb.y)) - a.y) / (b.y - a.y) : 1.0f;
-  const float t1 = std::min(tx, ty), t2 = std::max(tx, ty);
-  const float z1 = a.z + t1 * (b.z - a.z), z2 = a.z + t2 * (b.z - a.z);
-  const auto run = [&](int i, int j, float za, float zb) {
+struct SegmentWalk {
+  float entry = 0.0f;    // z where the segment entered its current column; below it all is tested
+  bool pending = false;  // a part of the current column from `entry` on is not tested yet
+
+  static bool run(const VoxelGrid& grid, int i, int j, float za, float zb) {
     return grid.anyInRun(i, j, static_cast<int>(std::floor(std::min(za, zb))),
                          static_cast<int>(std::floor(std::max(za, zb))));
-  };
-  if (run(ca.x, ca.y, a.z, z1)) return true;
-  if (!(t1 < 1.0f)) return false;
-  if (t2 < 1.0f && run(tx < ty ? cb.x : ca.x, tx < ty ? ca.y : cb.y, z1, z2)) return true;
-  return run(cb.x, cb.y, t2 < 1.0f ? z2 : z1, b.z);
-}
+  }
+  void start(const glm::vec3& a) {
+    entry = a.z;
+    pending = false;
+  }
+  // a at distance da, b at db; a hit sets hitDist.
+  bool step(const VoxelGrid& grid, const glm::vec3& a, const glm::vec3& b, float da, float db, float& hitDist) {
+    const glm::ivec2 ca(glm::floor(glm::vec2(a))), cb(glm::floor(glm::vec2(b)));
+    // Where the step crosses an x and a y boundary (1: it does not); within one column a's run is
+    // the whole step's.
+    const float tx = ca.x != cb.x ? (static_cast<float>(std::max(ca.x, cb.x)) - a.x) / (b.x - a.x) : 1.0f;
+    const float ty = ca.y != cb.y ? (static_cast<float>(std::max(ca.y, cb.y)) - a.y) / (b.y - a.y) : 1.0f;
+    const float t1 = std::min(tx, ty), t2 = std::max(tx, ty);
+    const float z1 = a.z + t1 * (b.z - a.z), z2 = a.z + t2 * (b.z - a.z);
+    hitDist = da + t1 * (db - da);
+    if (run(grid, ca.x, ca.y, entry, z1)) return true;
+    hitDist = da + t2 * (db - da);
+    if (t2 < 1.0f && run(grid, tx < ty ? cb.x : ca.x, tx < ty ? ca.y : cb.y, z1, z2)) return true;
+    entry = t2 < 1.0f ? z2 : z1;
+    pending = t1 < 1.0f;
+    return false;
+  }
+  // The last step's part in its end column b's.
+  bool finish(const VoxelGrid& grid, const glm::vec3& b) const {
+    return pending && run(grid, static_cast<int>(std::floor(b.x)), static_cast<int>(std::floor(b.y)), entry, b.z);
+  }
+};
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
@@ -169,25 +192,39 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
     // Ray and Graze: no step tested yet, and the first one tested spans its own voxel only.
     bool started = !fromSurface;
     glm::vec3 previous = glm::clamp(origin, lo, hi);
-    for (int j = 0; j < c.steps; ++j) {
+    const bool segment = c.spanTest && c.segmentTest;
+    SegmentWalk walk;
+    walk.start(previous);
+    float lastDist = 0.0f, hitDist = 0.0f;
+    bool hit = false;
+    for (int j = 0; j < c.steps && !hit; ++j) {
       const float dist = (static_cast<float>(j) + offset) * stepLength;
       if (fromSurface && lift + dist * local.z < c.normalOffset) continue;  // within the surface's own voxels
       const glm::vec3 g = glm::clamp(rayOrigin + dist * dir, lo, hi);
-      if (!started) previous = g;
+      if (!started) {
+        previous = g;
+        lastDist = dist;
+        walk.start(g);
+      }
       started = true;
       const glm::ivec3 v(glm::floor(g));
       const int previousK = static_cast<int>(std::floor(previous.z));
-      const bool hit = !c.spanTest     ? grid.get(v.x, v.y, v.z)
-                       : c.segmentTest ? stepHits(grid, previous, g)
-                                       : grid.anyInRun(v.x, v.y, std::min(previousK, v.z), std::max(previousK, v.z));
-      if (hit) {
-        // The falloff's distance is the hit's from the surface point, not from the lifted origin
-        // (the reference's rays start on the surface): grid units over |dir| (1 / voxel size).
-        const float hitDistance = glm::length(rayOrigin + dist * dir - surface) / glm::length(dir);
-        k = hybridFalloff(c.falloff, hitDistance, c.radius);
-        break;  // the GPU keeps stepping (no branch) but adds only the first hit
-      }
+      hit = !c.spanTest     ? grid.get(v.x, v.y, v.z)
+            : c.segmentTest ? walk.step(grid, previous, g, lastDist, dist, hitDist)
+                            : grid.anyInRun(v.x, v.y, std::min(previousK, v.z), std::max(previousK, v.z));
+      if (!segment) hitDist = dist;
+      lastDist = dist;
       previous = g;
+    }
+    if (!hit && segment) {
+      hit = walk.finish(grid, previous);
+      hitDist = lastDist;
+    }
+    if (hit) {
+      // The falloff's distance is the hit's from the surface point, not from the lifted origin
+      // (the reference's rays start on the surface): grid units over |dir| (1 / voxel size).
+      const float hitDistance = glm::length(rayOrigin + hitDist * dir - surface) / glm::length(dir);
+      k = hybridFalloff(c.falloff, hitDistance, c.radius);
     }
     sum += k * local.z;
     weights += local.z;

@@ -6,7 +6,7 @@
 // defined) and tests column (floor g_j.x, floor g_j.y): with the span test every voxel k in
 // [min, max] of (floor g_{j-1}.z, floor g_j.z), clamped to the grid, else only k = floor g_j.z;
 // with the segment test the segment g_{j-1} -> g_j in each column it crosses, over its own depth
-// there (README.md, March).
+// there, the part in g_j's column with the next step's (README.md, March).
 // Outside the grid reads as empty. An origin in a set voxel (a crease) first steps to an empty face
 // neighbour along the normal (README.md, March). A non-finite point or normal gives 0.
 #include <cstdint>

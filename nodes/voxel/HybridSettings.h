@@ -75,7 +75,7 @@ struct HybridSettings {
                                     //!<   segment crosses, each over its part of the depth (exact
                                     //!<   for steps of at most a voxel per axis). A step to the
                                     //!<   diagonal column passes between two voxels of a sheet
-                                    //!<   touching at an edge otherwise; off by default: about 2.2x
+                                    //!<   touching at an edge otherwise; off by default: about 1.8x
                                     //!<   the AO time, and the misses it removes offset voxel bias
                                     //!<   at contacts (README: Steps through every column)
   double spread = 1.0;              //!< cone half-angle as a fraction of 90 degrees; 1 = the whole
