@@ -15,7 +15,7 @@ std::string HybridMarchConstants::defines() const {
   std::ostringstream d;
   d << "#define HAO_RAYS " << rays << "\n"
     << "#define HAO_FALLOFF " << static_cast<int>(falloff) << "\n"
-    << "#define HAO_SPAN_TEST " << (spanTest ? (segmentTest ? 2 : 1) : 0) << "\n"
+    << "#define HAO_SPAN_TEST " << (segmentWalk() ? 2 : spanTest ? 1 : 0) << "\n"
     << "#define HAO_LIFT " << lift << "\n"
     << "#define HAO_STATIC " << int(staticDynamic) << "\n"
     << "#define HAO_MAX_ZONES " << kMaxDynamicZones << "\n";
@@ -192,7 +192,7 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
     // Ray and Graze: no step tested yet, and the first one tested spans its own voxel only.
     bool started = !fromSurface;
     glm::vec3 previous = glm::clamp(origin, lo, hi);
-    const bool segment = c.spanTest && c.segmentTest;
+    const bool segment = c.segmentWalk();
     SegmentWalk walk;
     walk.start(previous);
     float lastDist = 0.0f, hitDist = 0.0f;
@@ -209,9 +209,9 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
       started = true;
       const glm::ivec3 v(glm::floor(g));
       const int previousK = static_cast<int>(std::floor(previous.z));
-      hit = !c.spanTest     ? grid.get(v.x, v.y, v.z)
-            : c.segmentTest ? walk.step(grid, previous, g, lastDist, dist, hitDist)
-                            : grid.anyInRun(v.x, v.y, std::min(previousK, v.z), std::max(previousK, v.z));
+      hit = segment      ? walk.step(grid, previous, g, lastDist, dist, hitDist)
+            : c.spanTest ? grid.anyInRun(v.x, v.y, std::min(previousK, v.z), std::max(previousK, v.z))
+                         : grid.get(v.x, v.y, v.z);
       if (!segment) hitDist = dist;
       lastDist = dist;
       previous = g;

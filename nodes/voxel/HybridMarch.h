@@ -49,6 +49,8 @@ struct HybridMarchConstants {
   glm::vec3 eye{0.0f};            // perspective: world position of the eye
   glm::vec3 towardEye{0.0f};      // parallel: unit world direction toward the viewer
 
+  // The segment test runs only with the span test (HAO_SPAN_TEST 2).
+  bool segmentWalk() const { return spanTest && segmentTest; }
   std::string defines() const;
 };
 

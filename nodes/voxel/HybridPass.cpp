@@ -64,8 +64,9 @@ int raysPerMarchPass(const HybridMarchConstants& c, bool hasGrid) {
   const double voxelsPerUnit = std::sqrt(std::max({glm::dot(m3[0], m3[0]), glm::dot(m3[1], m3[1]), glm::dot(m3[2], m3[2])}));
   const double stepVoxels = c.radius / c.steps * voxelsPerUnit;
   const auto runWords = [&](double voxels) { return std::min(c.dims.z / 32.0 + 1.0, std::ceil((voxels + 1.0) / 32.0) + 1.0); };
-  const double words = c.segmentTest ? runWords(2.0 * stepVoxels) + runWords(stepVoxels) : runWords(stepVoxels);
-  const double perRay = 2.0 + c.steps * (1.0 + words) + (c.segmentTest ? runWords(stepVoxels) : 0.0);
+  const bool segment = c.segmentWalk();
+  const double words = segment ? runWords(2.0 * stepVoxels) + runWords(stepVoxels) : runWords(stepVoxels);
+  const double perRay = 2.0 + c.steps * (1.0 + words) + (segment ? runWords(stepVoxels) : 0.0);
   // llvmpipe's 65535 iterations, less the denominator's loop over all rays and some margin.
   const double budget = 60000.0 - 2.0 * c.rays;
   return static_cast<int>(std::clamp(std::floor(budget / perRay), 1.0, static_cast<double>(c.rays)));
