@@ -6,8 +6,8 @@
 // nodes/voxel/README.md): object-space jitter keyed by the world position's cell and the quantized
 // normal, HAO_RAYS rays of a uniform cone pattern around the normal, haoSteps steps over R with a
 // per-ray offset, each step testing the voxels between it and the previous step in its column
-// (HAO_SPAN_TEST 1), the previous step's segment through the columns it crosses (2), or its own
-// voxel; the first hit weighs k(d) of the falloff; A = sum k cos /
+// (HAO_SPAN_TEST 1), or its own voxel; or no steps: the ray walked column by column over R, every
+// voxel it passes (2, the segment test); the first hit weighs k(d) of the falloff; A = sum k cos /
 // sum cos. Integer parts (hash, key, voxel addresses) are bit-exact with the CPU's.
 // Out 0: occlusion in .r. Out 1: the view z of the texel's pixel (+1 on background).
 // Rays haoFirstRay..haoRayEnd - 1 only: llvmpipe ends an invocation's loops after 65535 iterations
@@ -27,6 +27,7 @@ uniform int haoEmpty;         // 1: no grid this frame (no caster near the view)
 uniform mat4 haoWorldToGrid;
 uniform float haoRadius;      // R, world units
 uniform int haoSteps;         // steps per ray (a uniform: the grid's voxel size can raise it)
+uniform int haoWalkColumns;   // the segment test's walk: columns a ray can pass, at most
 uniform float haoCosMax;      // cos of the cone's half-angle
 uniform float haoNormalOffset;  // world units
 uniform float haoReach;         // RayLift::Graze: a ray's lift is offset (1 - reach cos), at least 0
@@ -142,31 +143,90 @@ bool haoAnyInRun(int i, int j, int k0, int k1)
   return false;
 }
 
-// The segment test (HAO_SPAN_TEST 2; the CPU's SegmentWalk says why): the voxels of each step's
-// segment a -> b (grid units, clamped as haoVoxel) in each column it passes, a's, the one between
-// where it crosses both an x and a y boundary, b's, each over the part of its depth in that column;
-// the part in b's column is tested with the next step's (entry: z where the segment entered its
-// current column; pending: a part from entry on is untested), the last step's after the loop; a hit
-// counts at the distance where its run ends (a at da, b at db; sets hitDist).
-bool haoZRun(int i, int j, float za, float zb)
+// GLSL 1.50 has no findLSB / findMSB: a float's exponent (exact for a power of two; float(x) may
+// round up to the next one).
+int haoLowestBit(uint x) { return int(floatBitsToUint(float(x & (~x + 1u))) >> 23) - 127; }
+int haoHighestBit(uint x)
 {
-  return haoAnyInRun(i, j, int(floor(min(za, zb))), int(floor(max(za, zb))));
+  int e = min(int(floatBitsToUint(float(x)) >> 23) - 127, 31);
+  return (x >> uint(e)) == 0u ? e - 1 : e;
 }
-bool haoStepHits(vec3 a, vec3 b, float da, float db, inout float entry, inout bool pending, out float hitDist)
+
+#if HAO_SPAN_TEST == 2
+// The segment test's walk (HAO_SPAN_TEST 2), operation for operation as the CPU's columnWalk
+// (nodes/voxel/ColumnWalk.cpp says why): the ray o + t dir (grid units), t0 <= t <= t1 clipped to
+// the grid's box, one (x, y) column at a time, each tested over the depth the ray spends in it; a
+// hit sets tHit where the ray enters the first set voxel.
+bool haoClipToGrid(vec3 o, vec3 dir, inout float t0, inout float t1)
 {
-  ivec2 ca = ivec2(floor(a.xy)), cb = ivec2(floor(b.xy));
-  float tx = ca.x != cb.x ? (float(max(ca.x, cb.x)) - a.x) / (b.x - a.x) : 1.0;
-  float ty = ca.y != cb.y ? (float(max(ca.y, cb.y)) - a.y) / (b.y - a.y) : 1.0;
-  float t1 = min(tx, ty), t2 = max(tx, ty);
-  float z1 = a.z + t1 * (b.z - a.z), z2 = a.z + t2 * (b.z - a.z);
-  hitDist = da + t1 * (db - da);
-  if (haoZRun(ca.x, ca.y, entry, z1)) return true;
-  hitDist = da + t2 * (db - da);
-  if (t2 < 1.0 && haoZRun(tx < ty ? cb.x : ca.x, tx < ty ? ca.y : cb.y, z1, z2)) return true;
-  entry = t2 < 1.0 ? z2 : z1;
-  pending = t1 < 1.0;
-  return false;
+  for (int a = 0; a < 3; ++a)
+  {
+    float hi = float(haoDims[a]);
+    if (dir[a] == 0.0)
+    {
+      if (!(o[a] >= 0.0 && o[a] <= hi)) return false;
+      continue;
+    }
+    float ta = (0.0 - o[a]) / dir[a], tb = (hi - o[a]) / dir[a];
+    t0 = max(t0, min(ta, tb));
+    t1 = min(t1, max(ta, tb));
+  }
+  return t0 <= t1;
 }
+
+bool haoColumnWalk(vec3 o, vec3 dir, float t0, float t1, out float tHit)
+{
+  tHit = 0.0;
+  if (!(t0 <= t1) || !haoClipToGrid(o, dir, t0, t1)) return false;
+  vec2 start = o.xy + t0 * dir.xy;
+  ivec2 c = ivec2(floor(start));
+  ivec2 stepC = ivec2(dir.x >= 0.0 ? 1 : -1, dir.y >= 0.0 ? 1 : -1);
+  vec2 delta = 1.0 / max(abs(dir.xy), vec2(1e-20));
+  vec2 f = start - vec2(c);
+  vec2 next = t0 + vec2(dir.x >= 0.0 ? 1.0 - f.x : f.x, dir.y >= 0.0 ? 1.0 - f.y : f.y) * delta;
+  float t = t0, tn = t0;
+  int k0 = 0, k1 = 0;
+  bool hit = false, more = true;
+  for (int n = 0; n < haoWalkColumns && more && !hit; ++n)
+  {
+    tn = min(min(next.x, next.y), t1);
+    float za = o.z + t * dir.z, zb = o.z + tn * dir.z;
+    k0 = int(floor(min(za, zb)));
+    k1 = int(floor(max(za, zb)));
+    hit = haoAnyInRun(c.x, c.y, k0, k1);
+    more = tn < t1;
+    if (!hit && more)
+    {
+      bool xNext = next.x < next.y;
+      t = xNext ? next.x : next.y;
+      c += xNext ? ivec2(stepC.x, 0) : ivec2(0, stepC.y);
+      next += xNext ? vec2(delta.x, 0.0) : vec2(0.0, delta.y);
+    }
+  }
+  if (!hit) return false;
+  // The first set voxel along the ray (a word at a time), and where the ray enters its depth slab.
+  bool up = dir.z >= 0.0;
+  k0 = max(k0, 0);
+  k1 = min(k1, haoDims.z - 1);
+  int k = up ? k0 : k1;
+  for (int w = 0; w <= (k1 >> 5) - (k0 >> 5); ++w)
+  {
+    int a = up ? max(k0, ((k0 >> 5) + w) << 5) : max(k0, ((k1 >> 5) - w) << 5);
+    int b = up ? min(k1, (((k0 >> 5) + w) << 5) | 31) : min(k1, (((k1 >> 5) - w) << 5) | 31);
+    int n = b - a + 1;
+    uint bits = haoWord(c.x, c.y, a) & ((n == 32 ? 0xffffffffu : ((1u << uint(n)) - 1u)) << uint(a & 31));
+    if (bits != 0u)
+    {
+      k = (a & ~31) + (up ? haoLowestBit(bits) : haoHighestBit(bits));
+      break;
+    }
+  }
+  float plane = float(up ? k : k + 1);
+  float entry = dir.z != 0.0 ? (plane - o.z) / dir.z : t;
+  tHit = clamp(entry, t, tn);
+  return true;
+}
+#endif
 
 // A ray origin in a set voxel (after the normal offset: a point within a voxel of another surface,
 // in a crease) moves one voxel to the face neighbour that is empty, not behind the surface, and
@@ -244,11 +304,22 @@ float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
     vec3 rayOrigin = origin;
     bool started = true;
 #endif
-    vec3 previous = clamp(origin, lo, hi);
-    float entry = previous.z;
-    bool pending = false;
-    float lastDist = 0.0, hitDist = 0.0;
+    float hitDist = 0.0;
     bool hit = false;
+#if HAO_SPAN_TEST == 2
+    // Ray and Graze: from the distance where the ray is the offset above the tangent plane.
+#if HAO_LIFT != 0
+    float below = fromSurface ? haoNormalOffset - lift : 0.0;
+#else
+    float below = 0.0;
+#endif
+    float t0 = below <= 0.0 ? 0.0 : local.z > 0.0 ? below / local.z : 2.0 * haoRadius;
+    float tHit = 0.0;
+    hit = t0 <= haoRadius && haoColumnWalk(rayOrigin, dir, t0, haoRadius, tHit);
+    // Half a voxel past the set voxel's face (as the CPU).
+    hitDist = tHit + 0.5 / length(dir);
+#else
+    vec3 previous = clamp(origin, lo, hi);
     for (int j = 0; j < haoSteps && !hit; ++j)
     {
       float dist = (float(j) + offset) * stepLength;
@@ -256,34 +327,17 @@ float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
       if (fromSurface && lift + dist * local.z < haoNormalOffset) continue;  // within the surface's own voxels
 #endif
       vec3 g = clamp(rayOrigin + dist * dir, lo, hi);
-      if (!started)
-      {
-        previous = g;
-        lastDist = dist;
-        entry = g.z;
-        pending = false;
-      }
+      if (!started) previous = g;
       started = true;
       ivec3 v = ivec3(floor(g));
-#if HAO_SPAN_TEST == 2
-      hit = haoStepHits(previous, g, lastDist, dist, entry, pending, hitDist);
-#elif HAO_SPAN_TEST
+#if HAO_SPAN_TEST
       int previousK = int(floor(previous.z));
       hit = haoAnyInRun(v.x, v.y, min(previousK, v.z), max(previousK, v.z));
 #else
       hit = haoAnyInRun(v.x, v.y, v.z, v.z);
 #endif
-#if HAO_SPAN_TEST != 2
       hitDist = dist;
-#endif
-      lastDist = dist;
       previous = g;
-    }
-#if HAO_SPAN_TEST == 2
-    if (!hit && pending)
-    {
-      hit = haoZRun(int(floor(previous.x)), int(floor(previous.y)), entry, previous.z);
-      hitDist = lastDist;
     }
 #endif
     // The falloff's distance from the surface point, not from the lifted origin (as the CPU).

@@ -1,6 +1,6 @@
 // The CPU Hybrid AO march against a closed form (a receiver under an infinite ceiling), and its
-// GPU-mirroring behaviour: span tests versus point tests on a thin sheet, span tests through the
-// columns a step crosses (a diagonal sheet), the grid's outside,
+// GPU-mirroring behaviour: span tests versus point tests on a thin sheet, the segment test's
+// column walk through a diagonal sheet, the grid's outside,
 // thread independence, uncovered and bad pixels.
 #include <gtest/gtest.h>
 
@@ -160,8 +160,8 @@ TEST(HybridMarch, StrideRaisesStepsWithinTheSettingAnd256) {
 // A sheet one voxel thick across x and y (dominant-axis voxels, its normal 42 degrees from x) in
 // front of the receivers, stepped at most one voxel at a time: a step that moves to the diagonal
 // column passes between two of the sheet's voxels touching only at an edge, and the span test,
-// which looks in the step's end column only, misses it; the segment test (`segment=1`) follows
-// each step through every column it crosses.
+// which looks in the step's end column only, misses it; the segment test (`segment=1`) walks the
+// ray through every column it passes.
 TEST(HybridMarch, SpanTestsFollowStepsAcrossColumnsThroughADiagonalSheet) {
   const double H = 0.5, R = 1.0, degrees = 42.0;
   const double a = degrees * 3.14159265358979323846 / 180.0;

@@ -30,9 +30,9 @@
 #include "reference/Metrics.h"
 #include "render/SceneRenderer.h"
 #include "scenes/BuiltinScenes.h"
+#include "voxel/ColumnWalk.h"
 #include "voxel/CpuVoxelizer.h"
 #include "voxel/HybridCpu.h"
-#include "voxel/HybridPass.h"
 #include "voxel/HybridPass.h"
 #include "voxel/HybridTechnique.h"
 #include "test_hybrid_rig.h"
@@ -206,13 +206,15 @@ TEST(HybridPass, RaysPerMarchPassStayWithinTheLoopBudget) {
   EXPECT_LE(n * (2 + 256 * 3) + 2 * 256, 65535);
   c.steps = 1;  // one step of 150 voxels: up to 8 words of the column
   EXPECT_LE(raysPerMarchPass(c, true) * (2 + 1 * (1 + 8)) + 512, 65535);
-  // The segment test: each step's first run reaches back into the previous step, a second run
-  // between columns, one more after the last step; a run over the whole 256 deep column: 9 words.
+  // The segment test's walk: a ray of 150 voxels passes at most 150 sqrt 2 + 3 columns, each one
+  // loop iteration and its run's words (all runs together 150 voxels of depth and one more a
+  // column: at most one word a column beyond 150 / 32 + 1), then up to 9 words for the first hit.
   c.segmentTest = true;
-  c.steps = 256;  // steps of 0.6 voxels: first run 1.2 voxels, up to 2 words; the others up to 2
-  EXPECT_LE(raysPerMarchPass(c, true) * (2 + 256 * (1 + 2 + 2) + 2) + 512, 65535);
-  c.steps = 1;  // the first run over 300 voxels, capped at the column
-  EXPECT_LE(raysPerMarchPass(c, true) * (2 + 1 * (1 + 9 + 9) + 9) + 512, 65535);
+  c.walkColumns = columnWalkBound(150.0);
+  EXPECT_GE(c.walkColumns, 150.0 * std::sqrt(2.0) + 3.0);
+  const int walkRays = raysPerMarchPass(c, true);
+  EXPECT_GT(walkRays, 16);
+  EXPECT_LE(walkRays * (2 + c.walkColumns + (c.walkColumns + 150 / 32 + 1) + 9) + 512, 65535);
   EXPECT_EQ(raysPerMarchPass(c, false), 256);
 }
 

@@ -7,6 +7,7 @@
 
 #include "reference/ParallelRows.h"
 #include "voxel/HybridSampling.h"
+#include "voxel/ColumnWalk.h"
 #include "voxel/StaticDynamic.h"
 
 namespace aokit {
@@ -49,6 +50,7 @@ HybridMarchConstants makeHybridMarchConstants(const HybridSettings& s, const Fra
     throw std::invalid_argument("hybrid: the voxel frame has no positive voxel size");
   HybridMarchConstants c = hybridMarchShape(s, context.falloff);
   c.steps = marchSteps(s, R, frame.voxelSize);
+  c.walkColumns = columnWalkBound(R / frame.voxelSize);
   c.radius = static_cast<float>(R);
   c.cosMax = static_cast<float>(std::max(0.0, std::cos(s.spread * 1.5707963267948966)));
   if (s.spread >= 1.0) c.cosMax = 0.0f;
@@ -96,51 +98,6 @@ glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const gl
   }
   return origin + best;
 }
-// The segment test: the voxels of each step's segment a -> b (grid units, clamped as voxelOf) in
-// each column it passes, a's, the one between where it crosses both an x and a y boundary, b's,
-// each over the part of its depth in that column. The span test looks in b's column alone over the
-// whole depth: a step to the diagonal column passes between two voxels of a sheet touching only at
-// an edge (a dominant-axis sheet is one voxel per column), and a's column above a.z goes unseen.
-// The part in b's column is tested with the next step's run of that column (one fetch a step, a
-// second only where it crosses both boundaries), the last step's after the loop. A hit counts at
-// the distance where its run ends (the ray leaves the column, or the step ends): past the set
-// voxel, as the span test's end of the step, which offsets the voxels' fattening of surfaces.
-// Exact where a step spans at most one voxel per axis (stride <= 1); longer steps test these
-// columns only.
-struct SegmentWalk {
-  float entry = 0.0f;    // z where the segment entered its current column; below it all is tested
-  bool pending = false;  // a part of the current column from `entry` on is not tested yet
-
-  static bool run(const VoxelGrid& grid, int i, int j, float za, float zb) {
-    return grid.anyInRun(i, j, static_cast<int>(std::floor(std::min(za, zb))),
-                         static_cast<int>(std::floor(std::max(za, zb))));
-  }
-  void start(const glm::vec3& a) {
-    entry = a.z;
-    pending = false;
-  }
-  // a at distance da, b at db; a hit sets hitDist.
-  bool step(const VoxelGrid& grid, const glm::vec3& a, const glm::vec3& b, float da, float db, float& hitDist) {
-    const glm::ivec2 ca(glm::floor(glm::vec2(a))), cb(glm::floor(glm::vec2(b)));
-    // Where the step crosses an x and a y boundary (1: it does not); within one column a's run is
-    // the whole step's.
-    const float tx = ca.x != cb.x ? (static_cast<float>(std::max(ca.x, cb.x)) - a.x) / (b.x - a.x) : 1.0f;
-    const float ty = ca.y != cb.y ? (static_cast<float>(std::max(ca.y, cb.y)) - a.y) / (b.y - a.y) : 1.0f;
-    const float t1 = std::min(tx, ty), t2 = std::max(tx, ty);
-    const float z1 = a.z + t1 * (b.z - a.z), z2 = a.z + t2 * (b.z - a.z);
-    hitDist = da + t1 * (db - da);
-    if (run(grid, ca.x, ca.y, entry, z1)) return true;
-    hitDist = da + t2 * (db - da);
-    if (t2 < 1.0f && run(grid, tx < ty ? cb.x : ca.x, tx < ty ? ca.y : cb.y, z1, z2)) return true;
-    entry = t2 < 1.0f ? z2 : z1;
-    pending = t1 < 1.0f;
-    return false;
-  }
-  // The last step's part in its end column b's.
-  bool finish(const VoxelGrid& grid, const glm::vec3& b) const {
-    return pending && run(grid, static_cast<int>(std::floor(b.x)), static_cast<int>(std::floor(b.y)), entry, b.z);
-  }
-};
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
@@ -189,36 +146,34 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
     // Ray and Graze: this ray's lift along the normal (world units), then steps below the offset skipped.
     const float lift = fromSurface && c.lift == 2 ? c.normalOffset * std::max(0.0f, 1.0f - c.reach * local.z) : 0.0f;
     const glm::vec3 rayOrigin = origin + lift * nGrid;
-    // Ray and Graze: no step tested yet, and the first one tested spans its own voxel only.
-    bool started = !fromSurface;
-    glm::vec3 previous = glm::clamp(origin, lo, hi);
-    const bool segment = c.segmentWalk();
-    SegmentWalk walk;
-    walk.start(previous);
-    float lastDist = 0.0f, hitDist = 0.0f;
+    float hitDist = 0.0f;
     bool hit = false;
-    for (int j = 0; j < c.steps && !hit; ++j) {
-      const float dist = (static_cast<float>(j) + offset) * stepLength;
-      if (fromSurface && lift + dist * local.z < c.normalOffset) continue;  // within the surface's own voxels
-      const glm::vec3 g = glm::clamp(rayOrigin + dist * dir, lo, hi);
-      if (!started) {
-        previous = g;
-        lastDist = dist;
-        walk.start(g);
-      }
-      started = true;
-      const glm::ivec3 v(glm::floor(g));
-      const int previousK = static_cast<int>(std::floor(previous.z));
-      hit = segment      ? walk.step(grid, previous, g, lastDist, dist, hitDist)
-            : c.spanTest ? grid.anyInRun(v.x, v.y, std::min(previousK, v.z), std::max(previousK, v.z))
+    if (c.segmentWalk()) {
+      // Ray and Graze: from the distance where the ray is the offset above the tangent plane.
+      const float below = fromSurface ? c.normalOffset - lift : 0.0f;
+      const float t0 = below <= 0.0f ? 0.0f : local.z > 0.0f ? below / local.z : 2.0f * c.radius;
+      float tHit = 0.0f;
+      hit = t0 <= c.radius && columnWalk(grid, rayOrigin, dir, t0, c.radius, c.walkColumns, tHit);
+      // Half a voxel past the set voxel's face: a dominant-axis voxel stands for a surface
+      // through its middle, on average.
+      hitDist = tHit + 0.5f / glm::length(dir);
+    } else {
+      // Ray and Graze: no step tested yet, and the first one tested spans its own voxel only.
+      bool started = !fromSurface;
+      glm::vec3 previous = glm::clamp(origin, lo, hi);
+      for (int j = 0; j < c.steps && !hit; ++j) {
+        const float dist = (static_cast<float>(j) + offset) * stepLength;
+        if (fromSurface && lift + dist * local.z < c.normalOffset) continue;  // within the surface's own voxels
+        const glm::vec3 g = glm::clamp(rayOrigin + dist * dir, lo, hi);
+        if (!started) previous = g;
+        started = true;
+        const glm::ivec3 v(glm::floor(g));
+        const int previousK = static_cast<int>(std::floor(previous.z));
+        hit = c.spanTest ? grid.anyInRun(v.x, v.y, std::min(previousK, v.z), std::max(previousK, v.z))
                          : grid.get(v.x, v.y, v.z);
-      if (!segment) hitDist = dist;
-      lastDist = dist;
-      previous = g;
-    }
-    if (!hit && segment) {
-      hit = walk.finish(grid, previous);
-      hitDist = lastDist;
+        hitDist = dist;
+        previous = g;
+      }
     }
     if (hit) {
       // The falloff's distance is the hit's from the surface point, not from the lifted origin

@@ -4,9 +4,9 @@
 // formulas). Step j of a ray reaches g_j = M (origin + t_j dir) (M the float world-to-grid
 // matrix, g_-1 = M origin; each g clamped to [-1, dims] before floor, so the int conversion is
 // defined) and tests column (floor g_j.x, floor g_j.y): with the span test every voxel k in
-// [min, max] of (floor g_{j-1}.z, floor g_j.z), clamped to the grid, else only k = floor g_j.z;
-// with the segment test the segment g_{j-1} -> g_j in each column it crosses, over its own depth
-// there, the part in g_j's column with the next step's (README.md, March).
+// [min, max] of (floor g_{j-1}.z, floor g_j.z), clamped to the grid, else only k = floor g_j.z.
+// The segment test has no steps: the ray M (origin + t dir), t in [0, R], column by column
+// (ColumnWalk.h), its hit half a voxel past the first set voxel's face (README.md, March).
 // Outside the grid reads as empty. An origin in a set voxel (a crease) first steps to an empty face
 // neighbour along the normal (README.md, March). A non-finite point or normal gives 0.
 #include <cstdint>
@@ -29,6 +29,7 @@ namespace aokit {
 struct HybridMarchConstants {
   int rays = 0;                       // #define HAO_RAYS
   int steps = 0;                      // uniform haoSteps (marchSteps: the grid can raise it)
+  int walkColumns = 0;                // uniform haoWalkColumns: the segment test's iteration bound
   Falloff falloff = Falloff::Binary;  // #define HAO_FALLOFF (0 binary, 1 wendland, 2 sqrt, 3 exponential)
   bool spanTest = true;               // #define HAO_SPAN_TEST 1
   bool segmentTest = false;           // with spanTest: #define HAO_SPAN_TEST 2

@@ -57,16 +57,14 @@ void HybridPass::Plan(const FrameContext& context, DeferredPlan& plan) {
 int raysPerMarchPass(const HybridMarchConstants& c, bool hasGrid) {
   if (!hasGrid) return c.rays;
   // Loop iterations of one ray, at most: each step, and the span test's words in it (a step spans
-  // at most its length in voxels plus one along the grid's depth, and no more than the column). The
-  // segment test's first run of a step reaches back into the previous step's depth, the run between
-  // columns is within the step, and one more run follows the last step.
+  // at most its length in voxels plus one along the grid's depth, and no more than the column).
+  // The segment test: each column of the walk and its run's words beyond the first (all runs
+  // together span the ray's depth plus one voxel a column), then the first set voxel's words.
   const glm::mat3 m3(c.worldToGrid);
   const double voxelsPerUnit = std::sqrt(std::max({glm::dot(m3[0], m3[0]), glm::dot(m3[1], m3[1]), glm::dot(m3[2], m3[2])}));
-  const double stepVoxels = c.radius / c.steps * voxelsPerUnit;
   const auto runWords = [&](double voxels) { return std::min(c.dims.z / 32.0 + 1.0, std::ceil((voxels + 1.0) / 32.0) + 1.0); };
-  const bool segment = c.segmentWalk();
-  const double words = segment ? runWords(2.0 * stepVoxels) + runWords(stepVoxels) : runWords(stepVoxels);
-  const double perRay = 2.0 + c.steps * (1.0 + words) + (segment ? runWords(stepVoxels) : 0.0);
+  const double stepWords = runWords(c.radius / c.steps * voxelsPerUnit), rayWords = runWords(c.radius * voxelsPerUnit);
+  const double perRay = c.segmentWalk() ? 2.0 + 3.0 * c.walkColumns + 2.0 * rayWords : 2.0 + c.steps * (1.0 + stepWords);
   // llvmpipe's 65535 iterations, less the denominator's loop over all rays and some margin.
   const double budget = 60000.0 - 2.0 * c.rays;
   return static_cast<int>(std::clamp(std::floor(budget / perRay), 1.0, static_cast<double>(c.rays)));
@@ -96,6 +94,7 @@ vtkTextureObject* HybridPass::RenderAO(DeferredFrame& f) {
   Voxels.bind(p, f.renWin, Settings.staticBake);
   p->SetUniformf("haoRadius", c.radius);
   p->SetUniformi("haoSteps", c.steps);
+  p->SetUniformi("haoWalkColumns", c.walkColumns);
   p->SetUniformf("haoCosMax", c.cosMax);
   p->SetUniformf("haoNormalOffset", c.normalOffset);
   p->SetUniformf("haoReach", c.reach);

@@ -71,13 +71,14 @@ struct HybridSettings {
                                     //!<   column (one texel of the packed grid): sheets across that
                                     //!<   axis (floors, table tops) are not stepped over; false =
                                     //!<   the seed's single voxel per step
-  bool segmentTest = false;         //!< with the span test: each step through every column its
-                                    //!<   segment crosses, each over its part of the depth (exact
-                                    //!<   for steps of at most a voxel per axis). A step to the
-                                    //!<   diagonal column passes between two voxels of a sheet
-                                    //!<   touching at an edge otherwise; off by default: about 1.8x
-                                    //!<   the AO time, and the misses it removes offset voxel bias
-                                    //!<   at contacts (README: Steps through every column)
+  bool segmentTest = false;         //!< with the span test: the ray walked column by column over R
+                                    //!<   (ColumnWalk.h), each column over the depth the ray spends
+                                    //!<   in it, no steps (steps, stride unused): every voxel it
+                                    //!<   passes, so no sheet is stepped over (a step to the diagonal
+                                    //!<   column passes between two voxels touching at an edge);
+                                    //!<   off by default: about 1.3x the AO time, and the misses it
+                                    //!<   removes offset voxel bias at contacts (README: Steps through
+                                    //!<   every column)
   double spread = 1.0;              //!< cone half-angle as a fraction of 90 degrees; 1 = the whole
                                     //!<   hemisphere (what the reference integrates); the seed's
                                     //!<   Figure 4 shows 0.25..0.75
