@@ -307,13 +307,15 @@ float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
     float hitDist = 0.0;
     bool hit = false;
 #if HAO_SPAN_TEST == 2
-    // Ray and Graze: from the distance where the ray is the offset above the tangent plane.
+    // Ray and Graze: from the first of the ray's step distances where it is the offset above the
+    // tangent plane (as the CPU).
 #if HAO_LIFT != 0
     float below = fromSurface ? haoNormalOffset - lift : 0.0;
 #else
     float below = 0.0;
 #endif
-    float t0 = below <= 0.0 ? 0.0 : local.z > 0.0 ? below / local.z : 2.0 * haoRadius;
+    float above = below <= 0.0 ? 0.0 : local.z > 0.0 ? below / local.z : 2.0 * haoRadius;
+    float t0 = above <= 0.0 ? 0.0 : (ceil(above / stepLength - offset) + offset) * stepLength;
     float tHit = 0.0;
     hit = t0 <= haoRadius && haoColumnWalk(rayOrigin, dir, t0, haoRadius, tHit);
     // Half a voxel past the set voxel's face (as the CPU).

@@ -149,9 +149,12 @@ float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const 
     float hitDist = 0.0f;
     bool hit = false;
     if (c.segmentWalk()) {
-      // Ray and Graze: from the distance where the ray is the offset above the tangent plane.
+      // Ray and Graze: from the first of the ray's step distances where it is the offset above the
+      // tangent plane (as the steps: from exactly there, the surface's own voxels in the next
+      // column stop the ray).
       const float below = fromSurface ? c.normalOffset - lift : 0.0f;
-      const float t0 = below <= 0.0f ? 0.0f : local.z > 0.0f ? below / local.z : 2.0f * c.radius;
+      const float above = below <= 0.0f ? 0.0f : local.z > 0.0f ? below / local.z : 2.0f * c.radius;
+      const float t0 = above <= 0.0f ? 0.0f : (std::ceil(above / stepLength - offset) + offset) * stepLength;
       float tHit = 0.0f;
       hit = t0 <= c.radius && columnWalk(grid, rayOrigin, dir, t0, c.radius, c.walkColumns, tHit);
       // Half a voxel past the set voxel's face: a dominant-axis voxel stands for a surface

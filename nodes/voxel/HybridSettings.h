@@ -73,7 +73,7 @@ struct HybridSettings {
                                     //!<   the seed's single voxel per step
   bool segmentTest = false;         //!< with the span test: the ray walked column by column over R
                                     //!<   (ColumnWalk.h), each column over the depth the ray spends
-                                    //!<   in it, no steps (steps, stride unused): every voxel it
+                                    //!<   in it, no steps (lift=ray, graze start at one): every voxel it
                                     //!<   passes, so no sheet is stepped over (a step to the diagonal
                                     //!<   column passes between two voxels touching at an edge);
                                     //!<   off by default: about 1.3x the AO time, and the misses it
