@@ -118,6 +118,13 @@ bool haoNearDynamic(vec3 o)
 }
 #endif
 
+// Bits a..b (one word: a >> 5 == b >> 5) of their word.
+uint haoRunMask(int a, int b)
+{
+  int n = b - a + 1;
+  return (n == 32 ? 0xffffffffu : ((1u << uint(n)) - 1u)) << uint(a & 31);
+}
+
 // Any voxel k0..k1 (clamped) of column (i, j) set? Outside the grid reads as empty. Most steps
 // stay within one 32-bit word: one fetch, no loop.
 bool haoAnyInRun(int i, int j, int k0, int k1)
@@ -126,18 +133,11 @@ bool haoAnyInRun(int i, int j, int k0, int k1)
   k0 = max(k0, 0);
   k1 = min(k1, haoDims.z - 1);
   if (k0 > k1) return false;
-  if ((k0 >> 5) == (k1 >> 5))
-  {
-    int n = k1 - k0 + 1;
-    uint mask = (n == 32 ? 0xffffffffu : ((1u << uint(n)) - 1u)) << uint(k0 & 31);
-    return (haoWord(i, j, k0) & mask) != 0u;
-  }
+  if ((k0 >> 5) == (k1 >> 5)) return (haoWord(i, j, k0) & haoRunMask(k0, k1)) != 0u;
   for (int k = k0; k <= k1;)
   {
     int last = min(k1, k | 31);
-    int n = last - k + 1;
-    uint mask = (n == 32 ? 0xffffffffu : ((1u << uint(n)) - 1u)) << uint(k & 31);
-    if ((haoWord(i, j, k) & mask) != 0u) return true;
+    if ((haoWord(i, j, k) & haoRunMask(k, last)) != 0u) return true;
     k = last + 1;
   }
   return false;
@@ -213,8 +213,7 @@ bool haoColumnWalk(vec3 o, vec3 dir, float t0, float t1, out float tHit)
   {
     int a = up ? max(k0, ((k0 >> 5) + w) << 5) : max(k0, ((k1 >> 5) - w) << 5);
     int b = up ? min(k1, (((k0 >> 5) + w) << 5) | 31) : min(k1, (((k1 >> 5) - w) << 5) | 31);
-    int n = b - a + 1;
-    uint bits = haoWord(c.x, c.y, a) & ((n == 32 ? 0xffffffffu : ((1u << uint(n)) - 1u)) << uint(a & 31));
+    uint bits = haoWord(c.x, c.y, a) & haoRunMask(a, b);
     if (bits != 0u)
     {
       k = (a & ~31) + (up ? haoLowestBit(bits) : haoHighestBit(bits));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/Finite.h"
 #include "io/TextNumbers.h"
 
 namespace aokit {
@@ -17,7 +18,6 @@ std::string shortNumber(double v) {
   return s.str();
 }
 
-bool isFinite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
 
@@ -50,14 +50,14 @@ std::string NumberRange::problemWith(std::string_view text) const {
 std::optional<CameraProblem> cameraProblem(const Camera& c) {
   using P = CameraProblem;
   auto coordinate = [](const glm::dvec3& v) {
-    return isFinite(v) && limits::kCoordinate.contains(v.x) && limits::kCoordinate.contains(v.y) &&
+    return allFinite(v) && limits::kCoordinate.contains(v.x) && limits::kCoordinate.contains(v.y) &&
            limits::kCoordinate.contains(v.z);
   };
   const std::string coords = "must be 3 numbers in [" + shortNumber(limits::kCoordinate.min) + ", " +
                              shortNumber(limits::kCoordinate.max) + "] " + limits::kCoordinate.unit;
   if (!coordinate(c.position)) return P{P::Position, coords};
   if (!coordinate(c.focalPoint)) return P{P::FocalPoint, coords};
-  if (!isFinite(c.viewUp)) return P{P::ViewUp, "must be 3 finite numbers"};
+  if (!allFinite(c.viewUp)) return P{P::ViewUp, "must be 3 finite numbers"};
   if (!limits::kViewAngle.contains(c.viewAngleDeg)) return P{P::ViewAngle, "must be " + limits::kViewAngle.describe()};
   const glm::dvec3 dir = c.focalPoint - c.position;
   if (!(glm::length(dir) > 0.0)) return P{P::FocalPoint, "coincides with the camera position"};

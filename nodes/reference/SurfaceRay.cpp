@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/Finite.h"
 #include "reference/EmbreeScene.h"
 
 namespace aokit {
@@ -21,7 +22,6 @@ void basis(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
   b = glm::vec3(c, sign + n.y * n.y * a, -n.y);
 }
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
 
@@ -34,7 +34,7 @@ SurfaceRay makeSurfaceRay(const EmbreeScene& scene, const glm::vec3& p, const gl
                           Hemisphere hemisphere) {
   SurfaceRay r;
   const float len = glm::length(nIn);
-  if (!finite(p) || !(len > 0.0f) || !std::isfinite(len)) return r;
+  if (!allFinite(p) || !(len > 0.0f) || !std::isfinite(len)) return r;
   r.valid = true;
   r.normal = nIn / len;
   basis(r.normal, r.tangent, r.bitangent);

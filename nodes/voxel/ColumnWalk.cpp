@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Finite.h"
+
 namespace aokit {
 
 int columnWalkBound(double lengthVoxels) {
@@ -29,8 +31,7 @@ bool clipToBox(const glm::vec3& o, const glm::vec3& dir, const glm::ivec3& dims,
 
 bool columnWalk(const VoxelGrid& grid, const glm::vec3& o, const glm::vec3& dir, float t0, float t1, int maxColumns,
                 float& tHit) {
-  const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
-  if (!finite(o) || !finite(dir) || !std::isfinite(t0) || !std::isfinite(t1)) return false;
+  if (!allFinite(o) || !allFinite(dir) || !std::isfinite(t0) || !std::isfinite(t1)) return false;
   if (!(t0 <= t1) || !clipToBox(o, dir, grid.dims(), t0, t1)) return false;
   const glm::vec2 start = glm::vec2(o) + t0 * glm::vec2(dir);
   glm::ivec2 c(glm::floor(start));

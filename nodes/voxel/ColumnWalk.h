@@ -1,10 +1,11 @@
 #pragma once
-// The segment test's walk (HybridSettings::segmentTest; the GPU's haoColumnWalk in
-// shaders/HybridMarchFS.glsl does the same, operation for operation): a ray through the bit-packed
-// grid one (x, y) column at a time, each column tested over the depth the ray spends in it. One
-// texel of the packed grid holds 32 voxels of a column's depth, so a column is one fetch for most
-// rays, and the walk is exact: it meets every voxel the ray passes, and no other, whatever the
-// step length (a march of point samples steps past a sheet between two of them).
+// The segment test's walk (HybridSettings::segmentTest): a ray through the bit-packed grid one
+// (x, y) column at a time, each column tested over the depth the ray spends in it. One texel of
+// the packed grid holds 32 voxels of a column's depth, so a column is one fetch for most rays, and
+// the walk is exact: it meets every voxel the ray passes, and no other, whatever the step length
+// (a march of point samples steps past a sheet between two of them). The GPU's haoColumnWalk
+// (shaders/HybridMarchFS.glsl) walks the same columns, finding the first set voxel a word at a
+// time where this looks voxel by voxel.
 #include <glm/glm.hpp>
 
 #include "voxel/VoxelGrid.h"

@@ -5,9 +5,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/Finite.h"
 #include "reference/ParallelRows.h"
-#include "voxel/HybridSampling.h"
 #include "voxel/ColumnWalk.h"
+#include "voxel/HybridSampling.h"
 #include "voxel/StaticDynamic.h"
 
 namespace aokit {
@@ -98,7 +99,6 @@ glm::vec3 leaveSetVoxel(const VoxelGrid& grid, const glm::vec3& origin, const gl
   }
   return origin + best;
 }
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace
 
 glm::vec3 towardViewer(const HybridMarchConstants& c, const glm::vec3& p) {
@@ -118,7 +118,7 @@ void setViewer(HybridMarchConstants& c, const Camera& camera) {
 }
 
 float marchHybridAO(const VoxelGrid& grid, const HybridMarchConstants& c, const glm::vec3& p, const glm::vec3& n) {
-  if (!finite(p) || !finite(n)) return 0.0f;
+  if (!allFinite(p) || !allFinite(n)) return 0.0f;
   const glm::vec3 jitter = hybridJitter(hybridJitterKey(p, n, c.invJitterCell, c.jitterSeed));
   glm::vec3 t, b;
   hybridBasis(n, t, b);
