@@ -298,10 +298,8 @@ float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
     // Ray and Graze: this ray's lift along the normal, then steps below the offset skipped.
     float lift = fromSurface && HAO_LIFT == 2 ? haoNormalOffset * max(0.0, 1.0 - haoReach * local.z) : 0.0;
     vec3 rayOrigin = origin + lift * (m3 * n);
-    bool started = !fromSurface;  // the first step tested spans its own voxel only
 #else
     vec3 rayOrigin = origin;
-    bool started = true;
 #endif
     float hitDist = 0.0;
     bool hit = false;
@@ -320,7 +318,10 @@ float haoOcclusion(vec3 p, vec3 n, vec3 toViewer)
     // Half a voxel past the set voxel's face (as the CPU).
     hitDist = tHit + 0.5 / length(dir);
 #else
-    vec3 previous = clamp(origin, lo, hi);
+    // The first step tested spans its own voxel only (as the CPU: a span from the origin's height
+    // in the step's column met the surface's own voxels beside the origin).
+    bool started = false;
+    vec3 previous = vec3(0.0);
     for (int j = 0; j < haoSteps && !hit; ++j)
     {
       float dist = (float(j) + offset) * stepLength;
