@@ -47,7 +47,7 @@ VoxelGrid cpuGrid(Scene& s, const VoxelRegion& region, const HybridSettings& hs)
   const auto all = collectInstances(*s.root, kCastsAO);
   std::vector<GeometryInstance> casters;
   for (std::size_t i : region.casters) casters.push_back(all[i]);
-  return voxelizeInstances(casters, region.frame, voxelizeMethodFor(hs.frame), hs.solid);
+  return voxelizeInstances(casters, region.frame, voxelizeMethodFor(hs.frame), hs.solid, {}, hs.trimShell);
 }
 
 }  // namespace

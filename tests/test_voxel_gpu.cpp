@@ -50,11 +50,11 @@ struct GL {
   vtkOpenGLRenderWindow* renWin() { return window.window(); }
 
   VoxelGrid voxelize(const std::vector<std::pair<vtkPolyData*, glm::dmat4>>& shapes, const VoxelFrame& f,
-                     VoxelizeMethod m, bool solid) {
+                     VoxelizeMethod m, bool solid, bool trim = false) {
     std::vector<CasterDraw> draws;
     for (const auto& [poly, world] : shapes) draws.push_back({buffers.get(poly), world});
-    EXPECT_EQ(gpu.ready(renWin(), m, solid), nullptr);
-    gpu.voxelize(renWin(), f, draws, m, solid);
+    EXPECT_EQ(gpu.ready(renWin(), m, solid, trim), nullptr);
+    gpu.voxelize(renWin(), f, draws, m, solid, trim);
     VoxelGrid out;
     EXPECT_TRUE(gpu.readBack(out));
     return out;
@@ -94,13 +94,14 @@ VoxelFrame frameAround(const Shape& s, int res, bool rotated) {
   return VoxelFrame::onLattice(b, res, rotated ? randomRotation(3) : glm::dmat3(1.0));
 }
 
-VoxelGrid cpuGrid(const Shape& s, const VoxelFrame& f, VoxelizeMethod m, bool solid) {
+VoxelGrid cpuGrid(const Shape& s, const VoxelFrame& f, VoxelizeMethod m, bool solid, bool trim = false) {
   VoxelGrid g(f.dims);
   voxelizeMesh(g, f, *s.mesh, s.world, m);
   if (solid && isWatertight(*s.mesh)) {
     VoxelGrid parity(f.dims);
     fillSolidParity(parity, f, *s.mesh, s.world);
-    g.merge(parity);
+    if (trim) g.mergeTrimmed(parity);
+    else g.merge(parity);
   }
   return g;
 }
@@ -115,19 +116,20 @@ TEST(GpuVoxelizer, MatchesTheCpuVoxelizer) {
   struct Case {
     const char* name;
     VoxelizeMethod method;
-    bool solid, rotated;
+    bool solid, rotated, trim;
   };
-  const Case cases[] = {{"three-axis", VoxelizeMethod::ThreeAxis, false, false},
-                        {"three-axis solid", VoxelizeMethod::ThreeAxis, true, false},
-                        {"dominant-centre", VoxelizeMethod::DominantCentre, false, false},
-                        {"column-centre rotated", VoxelizeMethod::ColumnCentre, false, true}};
+  const Case cases[] = {{"three-axis", VoxelizeMethod::ThreeAxis, false, false, false},
+                        {"three-axis solid", VoxelizeMethod::ThreeAxis, true, false, false},
+                        {"dominant-centre", VoxelizeMethod::DominantCentre, false, false, false},
+                        {"dominant solid trimmed", VoxelizeMethod::DominantCentre, true, false, true},
+                        {"column-centre rotated", VoxelizeMethod::ColumnCentre, false, true, false}};
   for (const Shape& s : shapes()) {
     vtkSmartPointer<vtkPolyData> poly = toPolyData(*s.mesh);
     for (int res : {64, 256})
       for (const Case& c : cases) {
         const VoxelFrame f = frameAround(s, res, c.rotated);
-        const VoxelGrid cpu = cpuGrid(s, f, c.method, c.solid);
-        const VoxelGrid gpu = gl.voxelize({{poly, s.world}}, f, c.method, c.solid);
+        const VoxelGrid cpu = cpuGrid(s, f, c.method, c.solid, c.trim);
+        const VoxelGrid gpu = gl.voxelize({{poly, s.world}}, f, c.method, c.solid, c.trim);
         ASSERT_EQ(gpu.dims(), cpu.dims());
         const double iou = intersectionOverUnion(gpu, cpu);
         std::cout << "  " << std::left << std::setw(12) << s.name << std::right << std::setw(4) << res << "  "
@@ -161,6 +163,34 @@ TEST(GpuVoxelizer, RoomWallsAreNotLost) {
       EXPECT_EQ(intersectionCount(wall, gpu), wall.count()) << inst.geometry->name() << " at " << res;
     }
   }
+}
+
+// Trimming with open and closed casters together (the tank: a floor, boxes, cylinders): the GPU's
+// grid is the CPU's, and the open casters' voxels are all kept.
+TEST(GpuVoxelizer, TrimmedGridMatchesTheCpu) {
+  GL gl;
+  Scene tank = makeBuiltinScene("tank");
+  const auto instances = collectInstances(*tank.root, kCastsAO);
+  SceneRenderer scene(gl.window.renderer());
+  std::vector<std::pair<vtkPolyData*, glm::dmat4>> all;
+  for (const auto& inst : instances) all.push_back({scene.polyDataFor(inst.geometry->mesh()), inst.world});
+  const VoxelFrame f = VoxelFrame::onLattice(worldBounds(*tank.root), 192);
+  const VoxelGrid gpu = gl.voxelize(all, f, VoxelizeMethod::DominantCentre, true, true);
+  const VoxelGrid cpu = voxelizeInstances(instances, f, VoxelizeMethod::DominantCentre, true, {}, true);
+  const VoxelGrid untrimmed = voxelizeInstances(instances, f, VoxelizeMethod::DominantCentre, true);
+  std::cout << "tank at 192: trimmed " << cpu.count() << " of " << untrimmed.count() << " voxels, GPU differs in "
+            << differing(gpu, cpu) << "\n";
+  EXPECT_LT(cpu.count(), untrimmed.count());
+  EXPECT_GE(intersectionOverUnion(gpu, cpu), 0.9999);
+  std::size_t open = 0;
+  for (const auto& inst : instances)
+    if (!isWatertight(*inst.geometry->mesh())) {
+      VoxelGrid own(f.dims);
+      voxelizeMesh(own, f, *inst.geometry->mesh(), inst.world, VoxelizeMethod::DominantCentre);
+      EXPECT_GE(intersectionCount(own, gpu) + 4, own.count()) << inst.geometry->name();
+      ++open;
+    }
+  EXPECT_GT(open, 0u);
 }
 
 // Plain VTK polydata: triangle strips and quads (a cube source) become the same triangles.

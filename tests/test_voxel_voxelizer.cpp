@@ -325,3 +325,70 @@ TEST(SolidVoxelizer, ParityFillsVoxelCentresInside) {
     EXPECT_EQ(sphereWrong, 0u) << "rotated " << rotated;
   }
 }
+
+namespace {
+// Mean over the columns that cross a unit sphere well inside its silhouette (|xy| < 0.8) of how far
+// the top set voxel's upper face lies above the sphere's top along the column, in voxels.
+double meanTopOvershoot(const VoxelGrid& g, const VoxelFrame& f) {
+  double sum = 0.0;
+  int n = 0;
+  for (int j = 0; j < f.dims.y; ++j)
+    for (int i = 0; i < f.dims.x; ++i) {
+      const glm::dvec3 c = f.toWorld(glm::dvec3(i + 0.5, j + 0.5, 0.0));
+      const double r2 = c.x * c.x + c.y * c.y;
+      if (r2 > 0.64) continue;
+      int top = -1;
+      for (int k = f.dims.z - 1; k >= 0 && top < 0; --k)
+        if (g.get(i, j, k)) top = k;
+      const double surface = f.toGrid(glm::dvec3(c.x, c.y, std::sqrt(1.0 - r2))).z;
+      sum += (top + 1) - surface;
+      ++n;
+    }
+  return n > 0 ? sum / n : 0.0;
+}
+}  // namespace
+
+// Trimming: a solid's surface voxels outside it, beside its inside, are dropped, so that its voxels
+// end at the surface on average (untrimmed: half a voxel beyond it); a part thinner than a voxel
+// (no voxel centre inside) and open meshes keep every voxel.
+TEST(SolidVoxelizer, TrimmedSurfaceIsNotFattened) {
+  Bounds region;
+  region.extend(glm::dvec3(-1.2));
+  region.extend(glm::dvec3(1.2));
+  const VoxelFrame f = VoxelFrame::fitting(region, 96);
+  const auto voxelize = [&](const std::vector<GeometryInstance>& in, bool trim) {
+    return voxelizeInstances(in, f, VoxelizeMethod::DominantCentre, true, {}, trim);
+  };
+  Geometry sphere(makeUVSphere(1.0, 256, 128), glm::vec3(0.8f));
+  const std::vector<GeometryInstance> sphereOnly = {{&sphere, glm::dmat4(1.0)}};
+  const VoxelGrid fat = voxelize(sphereOnly, false), trimmed = voxelize(sphereOnly, true);
+  const double fatOver = meanTopOvershoot(fat, f), trimmedOver = meanTopOvershoot(trimmed, f);
+  std::cout << "sphere top, set voxels beyond the surface (voxels): untrimmed " << fatOver << ", trimmed "
+            << trimmedOver << "\n";
+  EXPECT_NEAR(fatOver, 0.5, 0.1);
+  EXPECT_NEAR(trimmedOver, 0.0, 0.1);
+  // Every voxel whose centre is inside stays.
+  VoxelGrid inside(f.dims);
+  fillSolidParity(inside, f, *sphere.mesh(), glm::dmat4(1.0));
+  EXPECT_GT(inside.count(), 100000u);
+  EXPECT_EQ(intersectionCount(trimmed, inside), inside.count());
+
+  // A slab 0.3 voxels thick about a voxel face (between centres): no centre inside, nothing trimmed.
+  Geometry slab(makeBox({1.0, 1.0, 0.3 * f.voxelSize}), glm::vec3(0.8f));
+  const glm::dvec3 face = f.toWorld(glm::dvec3(48.0, 48.0, 48.0));
+  const std::vector<GeometryInstance> thin = {{&slab, translation(face)}};
+  const VoxelGrid thinFat = voxelize(thin, false), thinTrimmed = voxelize(thin, true);
+  EXPECT_GT(thinFat.count(), 1000u);
+  EXPECT_EQ(thinTrimmed.count(), thinFat.count());
+  EXPECT_EQ(intersectionCount(thinTrimmed, thinFat), thinFat.count());
+
+  // A floor (open) touching the sphere: its voxels all kept beside the sphere's inside.
+  Geometry floor(makeGridPlane(2.4, 2.4, 8, 8), glm::vec3(0.8f));
+  const glm::dmat4 floorPlace = translation({0.0, 0.0, -0.95});
+  VoxelGrid floorOnly(f.dims);
+  voxelizeMesh(floorOnly, f, *floor.mesh(), floorPlace, VoxelizeMethod::DominantCentre);
+  const VoxelGrid both = voxelize({{&sphere, glm::dmat4(1.0)}, {&floor, floorPlace}}, true);
+  EXPECT_GT(floorOnly.count(), 1000u);
+  EXPECT_EQ(intersectionCount(both, floorOnly), floorOnly.count());
+  EXPECT_LT(intersectionCount(both, fat), fat.count());  // the sphere still trimmed beside the floor
+}

@@ -119,26 +119,39 @@ void voxelizeMesh(VoxelGrid& grid, const VoxelFrame& frame, const TriangleMesh& 
 }
 
 VoxelGrid voxelizeInstances(const std::vector<GeometryInstance>& instances, const VoxelFrame& frame,
-                            VoxelizeMethod method, bool solid, const std::function<void(double)>& progress) {
-  VoxelGrid grid(frame.dims), parity;
+                            VoxelizeMethod method, bool solid, const std::function<void(double)>& progress,
+                            bool trim) {
+  VoxelGrid grid(frame.dims), open, parity;
   std::map<const TriangleMesh*, bool> closed;  // meshes are shared between instances
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const auto& inst = instances[i];
     if (inst.geometry && inst.geometry->mesh()) {
       const TriangleMesh& mesh = *inst.geometry->mesh();
-      voxelizeMesh(grid, frame, mesh, inst.world, method);
+      bool watertight = false;
       if (solid) {
         auto it = closed.find(&mesh);
         if (it == closed.end()) it = closed.emplace(&mesh, isWatertight(mesh)).first;
-        if (it->second) {
+        watertight = it->second;
+        if (watertight) {
           if (parity.dims() != frame.dims) parity = VoxelGrid(frame.dims);
           fillSolidParity(parity, frame, mesh, inst.world);
         }
       }
+      // Trimming applies to the closed casters' own surface voxels: open ones are ORed in after.
+      if (trim && solid && !watertight) {
+        if (open.dims() != frame.dims) open = VoxelGrid(frame.dims);
+        voxelizeMesh(open, frame, mesh, inst.world, method);
+      } else {
+        voxelizeMesh(grid, frame, mesh, inst.world, method);
+      }
     }
     if (progress) progress(static_cast<double>(i + 1) / instances.size());
   }
-  if (parity.dims() == frame.dims) grid.merge(parity);
+  if (parity.dims() == frame.dims) {
+    if (trim) grid.mergeTrimmed(parity);
+    else grid.merge(parity);
+  }
+  if (open.dims() == frame.dims) grid.merge(open);
   return grid;
 }
 

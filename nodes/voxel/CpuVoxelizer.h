@@ -44,9 +44,11 @@ void voxelizeMesh(VoxelGrid& grid, const VoxelFrame& frame, const TriangleMesh& 
 
 // A grid of frame.dims holding every instance (those without a mesh are skipped). With `solid`,
 // the insides of watertight meshes are filled too (SolidVoxelizer.h: one parity grid for all of
-// them, ORed in). `progress`, if given, gets the fraction of instances done and may throw to cancel.
+// them, ORed in); with `trim` as well, their surface voxels outside that inside and beside it are
+// dropped (VoxelGrid::mergeTrimmed; open meshes' voxels are kept). `progress`, if given, gets the
+// fraction of instances done and may throw to cancel.
 VoxelGrid voxelizeInstances(const std::vector<GeometryInstance>& instances, const VoxelFrame& frame,
                             VoxelizeMethod method, bool solid = false,
-                            const std::function<void(double)>& progress = {});
+                            const std::function<void(double)>& progress = {}, bool trim = false);
 
 }  // namespace aokit

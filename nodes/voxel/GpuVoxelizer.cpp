@@ -57,7 +57,7 @@ GpuVoxelizer::GpuVoxelizer()
 
 GpuVoxelizer::~GpuVoxelizer() = default;
 
-const char* GpuVoxelizer::ready(vtkOpenGLRenderWindow* renWin, VoxelizeMethod method, bool solid) {
+const char* GpuVoxelizer::ready(vtkOpenGLRenderWindow* renWin, VoxelizeMethod method, bool solid, bool trim) {
   // GL 4.3 compute and image atomics, 4.4 texture clears, 4.5 direct state access: a context
   // without them (an old or macOS driver) gets the frame without AO, never a null call.
   if (!glDispatchCompute || !glMemoryBarrier || !glBindImageTexture || !glClearTexImage || !glCreateBuffers ||
@@ -70,7 +70,7 @@ const char* GpuVoxelizer::ready(vtkOpenGLRenderWindow* renWin, VoxelizeMethod me
   }
   if (!surface_->ready(renWin, modeDefine(modeOf(method)))) return "voxelize";
   if (solid && !parity_->ready(renWin, modeDefine(3))) return "voxelize parity";
-  if (solid && !merge_->ready(renWin, "")) return "voxel merge";
+  if (solid && !merge_->ready(renWin, trim ? "#define VOX_TRIM 1\n" : "#define VOX_TRIM 0\n")) return "voxel merge";
   return nullptr;
 }
 
@@ -141,16 +141,15 @@ void GpuVoxelizer::run(vtkOpenGLRenderWindow* renWin, ComputeProgram& program, v
 }
 
 void GpuVoxelizer::voxelize(vtkOpenGLRenderWindow* renWin, const VoxelFrame& frame,
-                            const std::vector<CasterDraw>& casters, VoxelizeMethod method, bool solid) {
+                            const std::vector<CasterDraw>& casters, VoxelizeMethod method, bool solid, bool trim) {
   modeOf(method);
   allocate(renWin, frame.dims, solid);
   clear(grid_);
   bool anySolid = false;
+  for (const CasterDraw& c : casters) anySolid = anySolid || (c.mesh && c.mesh->watertight);
+  trim = trim && solid && anySolid;  // the open casters after the merge: trimming is for closed ones
   for (const CasterDraw& c : casters)
-    if (c.mesh) {
-      run(renWin, *surface_, grid_, frame, c);
-      anySolid = anySolid || c.mesh->watertight;
-    }
+    if (c.mesh && (!trim || c.mesh->watertight)) run(renWin, *surface_, grid_, frame, c);
   if (solid && anySolid) {
     clear(parityGrid_);
     for (const CasterDraw& c : casters)
@@ -161,6 +160,11 @@ void GpuVoxelizer::voxelize(vtkOpenGLRenderWindow* renWin, const VoxelFrame& fra
     merge_->setIVec3("voxDims", frame.dims.x, frame.dims.y, frame.dims.z);
     merge_->dispatch(renWin, (frame.dims.x + 7) / 8, (frame.dims.y + 7) / 8);
     glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  }
+  if (trim) {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    for (const CasterDraw& c : casters)
+      if (c.mesh && !c.mesh->watertight) run(renWin, *surface_, grid_, frame, c);
   }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);

@@ -45,12 +45,14 @@ class GpuVoxelizer {
 
   // Builds the programs this strategy needs (context current); returns the name of one that does
   // not build, or nullptr ("voxelize" too when the context lacks OpenGL 4.5).
-  const char* ready(vtkOpenGLRenderWindow* renWin, VoxelizeMethod method, bool solid);
+  const char* ready(vtkOpenGLRenderWindow* renWin, VoxelizeMethod method, bool solid, bool trim = false);
   // Clears the grid (sized frame.dims), voxelizes every caster, parity-fills the watertight ones
-  // when `solid`, merges. ready() must have succeeded for the same method and solid. Throws
+  // when `solid`, merges (with `trim`: the watertight casters' surface voxels outside their inside
+  // and beside it dropped, VoxelGrid::mergeTrimmed; the open casters' voxelized after). ready() must
+  // have succeeded for the same method, solid and trim. Throws
   // std::invalid_argument when frame.dims exceed VoxelGrid's limits or the context's texture size.
   void voxelize(vtkOpenGLRenderWindow* renWin, const VoxelFrame& frame, const std::vector<CasterDraw>& casters,
-                VoxelizeMethod method, bool solid);
+                VoxelizeMethod method, bool solid, bool trim = false);
 
   vtkTextureObject* grid() const { return grid_; }  // null before the first voxelize()
   const glm::ivec3& dims() const { return dims_; }

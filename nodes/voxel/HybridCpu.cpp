@@ -36,8 +36,10 @@ bool inAnyZone(const std::vector<Bounds>& zones, const glm::vec3& o) {
 AOBuffer marchStaticDynamic(HybridCpuResult& out, const std::vector<GeometryInstance>& all, const SurfaceSamples& full,
                             const SurfaceSamples& low, int k, const HybridSettings& s, const FrameContext& context,
                             const std::vector<std::uint8_t>& dynamicReceivers, const Camera& camera) {
-  const VoxelGrid dynamicGrid = voxelizeInstances(pick(all, out.plan.dynamicCasters), out.region.frame, methodFor(s), s.solid);
-  VoxelGrid fullGrid = voxelizeInstances(pick(all, out.plan.staticCasters), out.region.frame, methodFor(s), s.solid);
+  const VoxelGrid dynamicGrid = voxelizeInstances(pick(all, out.plan.dynamicCasters), out.region.frame, methodFor(s),
+                                                  s.solid, {}, s.trimShell);
+  VoxelGrid fullGrid = voxelizeInstances(pick(all, out.plan.staticCasters), out.region.frame, methodFor(s), s.solid,
+                                         {}, s.trimShell);
   for (std::size_t w = 0; w < fullGrid.words().size(); ++w) fullGrid.words()[w] |= dynamicGrid.words()[w];
   out.voxels = fullGrid.count();
   HybridMarchConstants c = makeHybridMarchConstants(s, context, out.region.frame);
@@ -103,7 +105,8 @@ HybridCpuResult computeHybridAOCpu(Node& root, const Camera& camera, const Surfa
   if (s.staticBake) {
     lowAO = marchStaticDynamic(out, all, gbuffer, low, k, s, context, dynamicReceivers, camera);
   } else {
-    const VoxelGrid grid = voxelizeInstances(pick(all, out.region.casters), out.region.frame, methodFor(s), s.solid);
+    const VoxelGrid grid = voxelizeInstances(pick(all, out.region.casters), out.region.frame, methodFor(s), s.solid, {},
+                                             s.trimShell);
     out.voxels = grid.count();
     HybridMarchConstants c = makeHybridMarchConstants(s, context, out.region.frame);
     setViewer(c, camera);

@@ -48,6 +48,8 @@ const Schema<HybridSettings>& hybridSchema() {
              "voxelizer: conservative three-axis, the seed's rotated single direction, dominant axis");
     t.integer("seed", &S::frameSeed, 0, 2147483647, "rotated frame: seed of the random rotation");
     t.flag("solid", &S::solid, "fill the inside of closed casters");
+    t.flag("trim", &S::trimShell,
+           "with solid: closed casters' surface voxels outside them, beside an inside voxel, dropped (not fattened)");
     t.flag("lattice", &S::snapToLattice, "voxel size and origin on a fixed lattice (temporal stability)");
     t.number("region", &S::regionBudget, Interval::closed(4, 1024), "longest side of the view's region of interest, units of R");
     const char* axes = "xyz";

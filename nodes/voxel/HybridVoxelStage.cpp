@@ -28,12 +28,12 @@ HybridVoxelStage::~HybridVoxelStage() = default;
 
 void HybridVoxelStage::plan(DeferredPlan& plan, vtkOpenGLRenderWindow* renWin, const HybridSettings& s) {
   const VoxelizeMethod method = voxelizeMethodFor(s.frame);
-  plan.program("voxelize", [this, renWin, method, solid = s.solid] {
-    return voxelizer_->ready(renWin, method, solid) == nullptr;
+  plan.program("voxelize", [this, renWin, method, solid = s.solid, trim = s.trimShell] {
+    return voxelizer_->ready(renWin, method, solid, trim) == nullptr;
   });
   if (s.staticBake)
-    plan.program("voxelize (static)", [this, renWin, method, solid = s.solid] {
-      return staticVoxelizer_->ready(renWin, method, solid) == nullptr;
+    plan.program("voxelize (static)", [this, renWin, method, solid = s.solid, trim = s.trimShell] {
+      return staticVoxelizer_->ready(renWin, method, solid, trim) == nullptr;
     });
 }
 
@@ -64,7 +64,7 @@ void HybridVoxelStage::voxelize(vtkRenderer* renderer, vtkOpenGLRenderWindow* re
     region_ = regions_.get(frameView(renderer, context.ranks), casters.bounds, context.radius, s);
     if (!region_.empty) {
       const std::vector<CasterDraw> d = draws(casters, region_.casters);
-      voxelizer_->voxelize(renWin, region_.frame, d, voxelizeMethodFor(s.frame), s.solid);
+      voxelizer_->voxelize(renWin, region_.frame, d, voxelizeMethodFor(s.frame), s.solid, s.trimShell);
       constants_ = makeHybridMarchConstants(s, context, region_.frame);
       voxelized_ = d.size();
       hasGrid_ = true;
@@ -84,8 +84,8 @@ void HybridVoxelStage::voxelizeStaticDynamic(vtkRenderer* renderer, vtkOpenGLRen
   const std::vector<CasterDraw> dynamicDraws = draws(casters, plan.dynamicCasters);
   const std::vector<CasterDraw> staticDraws = draws(casters, plan.staticCasters);
   const VoxelizeMethod method = voxelizeMethodFor(s.frame);
-  voxelizer_->voxelize(renWin, region_.frame, dynamicDraws, method, s.solid);
-  staticVoxelizer_->voxelize(renWin, region_.frame, staticDraws, method, s.solid);
+  voxelizer_->voxelize(renWin, region_.frame, dynamicDraws, method, s.solid, s.trimShell);
+  staticVoxelizer_->voxelize(renWin, region_.frame, staticDraws, method, s.solid, s.trimShell);
   constants_ = makeHybridMarchConstants(s, context, region_.frame);
   voxelized_ = dynamicDraws.size() + staticDraws.size();
   voxelizedStatic_ = staticDraws.size();

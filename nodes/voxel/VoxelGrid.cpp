@@ -55,6 +55,30 @@ void VoxelGrid::merge(const VoxelGrid& other) {
   for (std::size_t w = 0; w < words_.size(); ++w) words_[w] |= other.words_[w];
 }
 
+void VoxelGrid::mergeTrimmed(const VoxelGrid& inside) {
+  if (inside.dims_ != dims_) throw std::invalid_argument("voxel grids of different dimensions");
+  static constexpr int kFaces[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+  std::vector<std::uint32_t> kept = words_;
+  for (std::size_t w = 0; w < words_.size(); ++w) {
+    std::uint32_t outside = words_[w] & ~inside.words_[w];  // set here, centre not inside
+    if (outside == 0u) continue;
+    const std::size_t texel = w / 4;
+    const int i = static_cast<int>(texel % dims_.x), j = static_cast<int>(texel / dims_.x % dims_.y);
+    const int slab = static_cast<int>(texel / (static_cast<std::size_t>(dims_.x) * dims_.y));
+    const int k0 = 128 * slab + 32 * static_cast<int>(w % 4);
+    for (int b = 0; b < 32; ++b) {
+      if (!((outside >> b) & 1u)) continue;
+      const int k = k0 + b;
+      for (const auto& f : kFaces)
+        if (inside.get(i + f[0], j + f[1], k + f[2])) {
+          kept[w] &= ~(1u << b);
+          break;
+        }
+    }
+  }
+  for (std::size_t w = 0; w < words_.size(); ++w) words_[w] = kept[w] | inside.words_[w];
+}
+
 void VoxelGrid::clear() { std::fill(words_.begin(), words_.end(), 0u); }
 
 std::size_t VoxelGrid::count() const {

@@ -71,6 +71,9 @@ class VoxelGrid {
   void flipRun(int i, int j, int k0, int k1);
   // this |= other (equal dims; throws otherwise).
   void merge(const VoxelGrid& other);
+  // As merge(inside), first clearing each voxel set here but not in `inside` that has a face
+  // neighbour set in `inside` (SolidVoxelizer.h: a closed caster's surface voxel outside it).
+  void mergeTrimmed(const VoxelGrid& inside);
   void clear();
 
   std::size_t count() const;  // set voxels
